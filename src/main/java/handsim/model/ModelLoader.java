@@ -1,0 +1,297 @@
+package handsim.model;
+
+import handsim.config.ConfigException;
+import handsim.config.Json;
+import handsim.math.Quat;
+import handsim.math.Vec3;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Loads and validates a model file (schema in {@code models/README.md}). Every inconsistency
+ * fails with a {@link ConfigException} that names the field and the bad value; a model that
+ * loads is complete and consistent.
+ */
+public final class ModelLoader {
+
+    /** Poses the controller needs. */
+    public static final List<String> REQUIRED_POSES = List.of("neutral", "open", "closed");
+    /** Sites the controller needs. */
+    public static final List<String> REQUIRED_SITES = List.of("palm_center");
+
+    private ModelLoader() {
+    }
+
+    public static HandModel load(Path file) {
+        return parse(Json.load(file));
+    }
+
+    public static HandModel parse(Json root) {
+        String name = root.string("name");
+        root.allow("description", "units", "sources", "comment");
+        List<Body> bodies = new ArrayList<>();
+        List<Joint> joints = new ArrayList<>();
+        List<Dof> dofs = new ArrayList<>();
+        Map<String, Integer> bodyIndex = new HashMap<>();
+        Map<String, Integer> jointNames = new HashMap<>();
+        Map<String, Integer> dofNames = new HashMap<>();
+
+        List<Json> bodyNodes = root.array("bodies");
+        if (bodyNodes.isEmpty()) {
+            throw root.fieldError("bodies", "at least one body is required");
+        }
+        for (Json b : bodyNodes) {
+            b.allow("comment");
+            String bodyName = b.string("name");
+            if (bodyName.isBlank() || bodyIndex.containsKey(bodyName)) {
+                throw b.fieldError("name", bodyName.isBlank() ? "must not be empty" : "duplicate body name \"" + bodyName + "\"");
+            }
+            String parentName = b.string("parent");
+            int parent;
+            if (parentName.equals("world")) {
+                parent = -1;
+                if (bodies.stream().anyMatch(x -> x.parent() < 0)) {
+                    throw b.fieldError("parent", "only one body may hang from the world (the fixed shoulder), got a second: \"" + bodyName + "\"");
+                }
+            } else {
+                Integer p = bodyIndex.get(parentName);
+                if (p == null) {
+                    throw b.fieldError("parent", "unknown body \"" + parentName + "\" (a parent must be declared before its children, or be \"world\")");
+                }
+                parent = p;
+            }
+            int index = bodies.size();
+            Vec3 parentOrigin = parent < 0 ? Vec3.ZERO : bodies.get(parent).origin();
+
+            Json j = b.get("joint");
+            j.allow("comment");
+            String jointName = j.string("name");
+            if (jointNames.containsKey(jointName)) {
+                throw j.fieldError("name", "duplicate joint name \"" + jointName + "\"");
+            }
+            JointType type;
+            String typeName = j.choice("type", "hinge", "universal", "ball");
+            type = JointType.parse(typeName);
+            Vec3 anchor = parentOrigin.plus(j.vec3("anchor"));
+            List<Json> dofNodes = j.array("dofs");
+            if (dofNodes.size() != type.dofCount()) {
+                throw j.fieldError("dofs", "a " + typeName + " joint has " + type.dofCount() + " dofs, got " + dofNodes.size());
+            }
+            Joint joint = new Joint(joints.size(), jointName, type, parent, index, anchor, dofs.size());
+            List<Vec3> axes = new ArrayList<>();
+            for (int s = 0; s < dofNodes.size(); s++) {
+                Json d = dofNodes.get(s);
+                d.allow("comment");
+                String dofName = d.string("name");
+                if (dofNames.containsKey(dofName)) {
+                    throw d.fieldError("name", "duplicate dof name \"" + dofName + "\"");
+                }
+                Vec3 axis = d.vec3("axis");
+                if (axis.norm() < 1e-9) {
+                    throw d.fieldError("axis", "must be a non-zero vector, got " + axis);
+                }
+                axis = axis.normalized();
+                double[] range = d.range("rangeDeg");
+                if (!(range[0] < range[1])) {
+                    throw d.fieldError("rangeDeg", "lower limit must be below upper limit, got [" + range[0] + ", " + range[1] + "]");
+                }
+                if (type == JointType.BALL && s == 1 && (range[0] <= -90 || range[1] >= 90)) {
+                    throw d.fieldError("rangeDeg", "the middle angle of a ball joint must stay inside (-90, 90) degrees (Euler singularity), got ["
+                            + range[0] + ", " + range[1] + "]");
+                }
+                double[] torque = torqueLimits(d);
+                d.requireNoUnknownFields();
+                Dof dof = new Dof(dofs.size(), dofName, joint.index(), s, axis, Math.toRadians(range[0]),
+                        Math.toRadians(range[1]), torque[0], torque[1]);
+                dofNames.put(dofName, dof.index());
+                dofs.add(dof);
+                axes.add(axis);
+            }
+            for (int s = 0; s < axes.size(); s++) {
+                for (int t = s + 1; t < axes.size(); t++) {
+                    double dot = axes.get(s).dot(axes.get(t));
+                    if (Math.abs(dot) > 1e-3) {
+                        throw j.fieldError("dofs", "axes of a " + typeName + " joint must be perpendicular, dofs " + s + " and " + t
+                                + " have cos = " + String.format("%.4f", dot));
+                    }
+                }
+            }
+            j.requireNoUnknownFields();
+            jointNames.put(jointName, joint.index());
+            joints.add(joint);
+
+            double mass = b.positive("mass");
+            List<Shape> shapes = new ArrayList<>();
+            for (Json g : b.array("shapes")) {
+                shapes.add(parseShape(g));
+            }
+            if (shapes.isEmpty()) {
+                throw b.fieldError("shapes", "at least one shape is needed (collision and inertia)");
+            }
+            boolean collides = b.bool("collides", true);
+            MassProperties mp = MassProperties.of(shapes, mass);
+            if (!mp.inertia().isPlausible()) {
+                throw b.fieldError("shapes", "shapes give an implausible inertia " + mp.inertia());
+            }
+            b.requireNoUnknownFields();
+            bodyIndex.put(bodyName, index);
+            bodies.add(new Body(index, bodyName, parent, joint.index(), anchor, mp, shapes, collides));
+        }
+
+        Map<String, Integer> breakdown = parseBreakdown(root, dofs.size());
+        Map<String, Site> sites = parseSites(root, bodyIndex);
+        Map<String, Pose> poses = parsePoses(root, dofNames, dofs);
+        root.requireNoUnknownFields();
+        return new HandModel(name, bodies, joints, dofs, sites, poses, breakdown);
+    }
+
+    /** "torqueLimit": a number L (symmetric, [-L, L]) or [min, max] with min < 0 < max. */
+    private static double[] torqueLimits(Json d) {
+        Json t = d.get("torqueLimit");
+        if (t.node().isNumber()) {
+            double limit = d.positive("torqueLimit");
+            return new double[] {-limit, limit};
+        }
+        double[] r = t.asNumbers(2);
+        if (!(r[0] < 0 && r[1] > 0)) {
+            throw t.error("torque limits must be [min < 0, max > 0] N m, got [" + r[0] + ", " + r[1] + "]");
+        }
+        return r;
+    }
+
+    /** Parses one shape; also used for the thrown objects in {@code configs/objects}. */
+    public static Shape parseShape(Json g) {
+        g.allow("comment");
+        String type = g.choice("type", "capsule", "cylinder", "box", "sphere");
+        Shape shape = switch (type) {
+            case "capsule" -> {
+                Vec3 a = g.vec3("from"), b = g.vec3("to");
+                double r = g.positive("radius");
+                if (a.distance(b) < 1e-9) {
+                    throw g.fieldError("to", "capsule end points must differ, got " + b);
+                }
+                yield new Shape.Capsule(a, b, r);
+            }
+            case "cylinder" -> {
+                Vec3 a = g.vec3("from"), b = g.vec3("to");
+                double r = g.positive("radius");
+                if (a.distance(b) < 1e-9) {
+                    throw g.fieldError("to", "cylinder end points must differ, got " + b);
+                }
+                yield new Shape.Cylinder(a, b, r);
+            }
+            case "box" -> {
+                Vec3 size = g.vec3("size");
+                if (!(size.x() > 0 && size.y() > 0 && size.z() > 0)) {
+                    throw g.fieldError("size", "box sizes must be > 0, got " + size);
+                }
+                Vec3 rot = g.vec3("rotationDeg", Vec3.ZERO);
+                yield new Shape.Box(g.vec3("center", Vec3.ZERO), size, Quat.fromRotationVector(rot.times(Math.PI / 180)));
+            }
+            case "sphere" -> new Shape.Sphere(g.vec3("center", Vec3.ZERO), g.positive("radius"));
+            default -> throw new IllegalStateException(type);
+        };
+        g.requireNoUnknownFields();
+        return shape;
+    }
+
+    private static Map<String, Integer> parseBreakdown(Json root, int actualDofs) {
+        Json bd = root.get("dofBreakdown");
+        Map<String, Integer> out = new LinkedHashMap<>();
+        int sum = 0;
+        for (String group : bd.fieldNames()) {
+            int n = bd.integer(group, 0, 1000);
+            out.put(group, n);
+            if (!group.equals("total")) {
+                sum += n;
+            }
+        }
+        if (!out.containsKey("total")) {
+            throw root.fieldError("dofBreakdown", "must state a \"total\"");
+        }
+        int total = out.get("total");
+        if (sum != total) {
+            throw root.fieldError("dofBreakdown", "groups sum to " + sum + " but total says " + total);
+        }
+        if (actualDofs != total) {
+            throw root.fieldError("dofBreakdown", "the joints define " + actualDofs + " DOF but the breakdown says " + total);
+        }
+        return out;
+    }
+
+    private static Map<String, Site> parseSites(Json root, Map<String, Integer> bodyIndex) {
+        Json sitesNode = root.get("sites");
+        Map<String, Site> sites = new LinkedHashMap<>();
+        for (String siteName : sitesNode.fieldNames()) {
+            Json s = sitesNode.get(siteName);
+            s.allow("comment");
+            String bodyName = s.string("body");
+            Integer body = bodyIndex.get(bodyName);
+            if (body == null) {
+                throw s.fieldError("body", "unknown body \"" + bodyName + "\"");
+            }
+            Vec3 x = s.vec3("x"), y = s.vec3("y");
+            if (x.norm() < 1e-9 || y.norm() < 1e-9 || Math.abs(x.normalized().dot(y.normalized())) > 1e-3) {
+                throw s.error("x and y must be non-zero and perpendicular, got x " + x + ", y " + y);
+            }
+            Vec3 ex = x.normalized(), ey = y.normalized();
+            sites.put(siteName, new Site(siteName, body, s.vec3("position"), Quat.fromFrame(ex, ey, ex.cross(ey))));
+            s.requireNoUnknownFields();
+        }
+        for (String required : REQUIRED_SITES) {
+            if (!sites.containsKey(required)) {
+                throw root.fieldError("sites", "the controller needs a site named \"" + required + "\"");
+            }
+        }
+        return sites;
+    }
+
+    private static Map<String, Pose> parsePoses(Json root, Map<String, Integer> dofNames, List<Dof> dofs) {
+        Json posesNode = root.get("poses");
+        Map<String, Pose> poses = new LinkedHashMap<>();
+        for (String poseName : posesNode.fieldNames()) {
+            Json p = posesNode.get(poseName);
+            List<String> names = p.fieldNames();
+            int[] idx = new int[names.size()];
+            double[] angles = new double[names.size()];
+            List<Integer> order = new ArrayList<>();
+            Map<Integer, Double> byDof = new HashMap<>();
+            for (String dofName : names) {
+                if (dofName.equals("comment")) {
+                    continue;
+                }
+                Integer d = dofNames.get(dofName);
+                if (d == null) {
+                    throw p.fieldError(dofName, "unknown dof \"" + dofName + "\"");
+                }
+                double deg = p.number(dofName);
+                Dof dof = dofs.get(d);
+                double rad = Math.toRadians(deg);
+                if (rad < dof.lower() - 1e-9 || rad > dof.upper() + 1e-9) {
+                    throw p.fieldError(dofName, "angle " + deg + " deg lies outside the dof's range ["
+                            + Math.toDegrees(dof.lower()) + ", " + Math.toDegrees(dof.upper()) + "]");
+                }
+                order.add(d);
+                byDof.put(d, rad);
+            }
+            order.sort(Integer::compare);
+            idx = new int[order.size()];
+            angles = new double[order.size()];
+            for (int i = 0; i < order.size(); i++) {
+                idx[i] = order.get(i);
+                angles[i] = byDof.get(order.get(i));
+            }
+            poses.put(poseName, new Pose(poseName, idx, angles));
+        }
+        for (String required : REQUIRED_POSES) {
+            if (!poses.containsKey(required)) {
+                throw root.fieldError("poses", "the controller needs a pose named \"" + required + "\"");
+            }
+        }
+        return poses;
+    }
+}

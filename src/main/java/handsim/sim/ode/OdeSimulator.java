@@ -1,0 +1,621 @@
+package handsim.sim.ode;
+
+import handsim.kin.Frame;
+import handsim.kin.Kinematics;
+import handsim.math.Quat;
+import handsim.math.Vec3;
+import handsim.model.Body;
+import handsim.model.Dof;
+import handsim.model.HandModel;
+import handsim.model.Joint;
+import handsim.model.Shape;
+import handsim.sim.ContactReport;
+import handsim.sim.ObjectSpec;
+import handsim.sim.RigidState;
+import handsim.sim.SimConfig;
+import handsim.sim.SimulationDiverged;
+import handsim.sim.Simulator;
+import handsim.sim.WorldSnapshot;
+import java.util.ArrayList;
+import java.util.List;
+import org.ode4j.math.DMatrix3;
+import org.ode4j.math.DQuaternion;
+import org.ode4j.math.DQuaternionC;
+import org.ode4j.math.DVector3;
+import org.ode4j.math.DVector3C;
+import org.ode4j.ode.DAMotorJoint;
+import org.ode4j.ode.DBallJoint;
+import org.ode4j.ode.DBody;
+import org.ode4j.ode.DBox;
+import org.ode4j.ode.DContact;
+import org.ode4j.ode.DContactBuffer;
+import org.ode4j.ode.DGeom;
+import org.ode4j.ode.DHingeJoint;
+import org.ode4j.ode.DJoint;
+import org.ode4j.ode.DJointGroup;
+import org.ode4j.ode.DMass;
+import org.ode4j.ode.DMisc;
+import org.ode4j.ode.DPlane;
+import org.ode4j.ode.DSpace;
+import org.ode4j.ode.DUniversalJoint;
+import org.ode4j.ode.DWorld;
+import org.ode4j.ode.OdeConstants;
+import org.ode4j.ode.OdeHelper;
+
+/**
+ * The arm+hand and a thrown object in an ode4j world, stepped with quickStep at the configured
+ * h. Contacts are generated only between the object and the hand/arm, the ground and static
+ * boxes (the hand does not collide with itself); each contact gets the ERP and CFM of the
+ * paper's compliant contact model from the masses of its two bodies.
+ */
+public final class OdeSimulator implements Simulator {
+
+    static {
+        OdeHelper.initODE2(0);
+    }
+
+    /** Speed beyond which the state is considered to have exploded, m/s. */
+    private static final double DIVERGED_SPEED = 200;
+
+    private enum Kind { HAND, OBJECT, GROUND, BOX }
+
+    /** What a geometry belongs to; stored as the geom's user data. */
+    private record GeomTag(Kind kind, int body) {
+    }
+
+    private final HandModel model;
+    private final SimConfig config;
+    private final Kinematics kin;
+    private final DWorld world;
+    private final DSpace handSpace;
+    private final DJointGroup contactGroup;
+    private final DPlane ground;
+    private final DBody torso;
+    private final DBody[] bodies;
+    private final Vec3[] centreOfMass;
+    private final DAMotorJoint[] limitMotors;
+    private final double[] q;
+    private final double[] qd;
+    private final double[] tau;
+    private final ContactReport contacts = new ContactReport();
+    private final DContactBuffer contactBuffer;
+    private final double[] handErp;
+    private final double[] handCfm;
+    private final List<DGeom> objectGeoms = new ArrayList<>();
+    private final List<DGeom> boxes = new ArrayList<>();
+    private final List<WorldSnapshot.StaticBox> boxSpecs = new ArrayList<>();
+    private final DGeom.DNearCallback nearCallback = (data, o1, o2) -> collidePair(o1, o2);
+    private DBody object;
+    private ObjectSpec objectSpec;
+    private double staticErp;
+    private double staticCfm;
+    private double time;
+    private long steps;
+    private boolean touchesGround;
+    private boolean touchesBox;
+
+    public OdeSimulator(HandModel model, SimConfig config) {
+        this.model = model;
+        this.config = config;
+        this.kin = new Kinematics(model);
+        int n = model.bodyCount();
+        world = OdeHelper.createWorld();
+        Vec3 g = config.gravity();
+        world.setGravity(g.x(), g.y(), g.z());
+        world.setQuickStepNumIterations(config.solverIterations());
+        world.setQuickStepW(config.sor());
+        // the paper's damping read as per-second rates: per-step scale = rate * h (SPEC)
+        world.setLinearDamping(config.linearDampingPerSecond() * config.timeStep());
+        world.setAngularDamping(config.angularDampingPerSecond() * config.timeStep());
+        world.setLinearDampingThreshold(0);
+        world.setAngularDampingThreshold(0);
+        world.setAutoDisableFlag(false);
+        handSpace = OdeHelper.createSimpleSpace();
+        contactGroup = OdeHelper.createJointGroup();
+        ground = OdeHelper.createPlane(null, 0, 1, 0, config.groundHeight());
+        ground.setData(new GeomTag(Kind.GROUND, -1));
+        contactBuffer = new DContactBuffer(config.maxContactsPerPair());
+        handErp = new double[n];
+        handCfm = new double[n];
+
+        // the fixed shoulder: a kinematic body that never moves
+        torso = OdeHelper.createBody(world);
+        torso.setKinematic();
+        bodies = new DBody[n];
+        centreOfMass = new Vec3[n];
+        for (Body b : model.bodies()) {
+            bodies[b.index()] = createBody(b);
+        }
+        limitMotors = new DAMotorJoint[model.joints().size()];
+        for (Joint j : model.joints()) {
+            createJoint(j);
+        }
+        q = new double[model.dofCount()];
+        qd = new double[model.dofCount()];
+        tau = new double[model.dofCount()];
+        reset(q, 0);
+    }
+
+    // ---- construction ---------------------------------------------------------------------
+
+    /** Creates a body at its zero-configuration place: frame at the joint anchor, world-aligned. */
+    private DBody createBody(Body b) {
+        DBody body = OdeHelper.createBody(world);
+        Vec3 com = b.mass().com();
+        centreOfMass[b.index()] = com;
+        DMass mass = OdeHelper.createMass();
+        mass.setMass(b.mass().mass());
+        var i = b.mass().inertia();
+        mass.setI(new DMatrix3(i.xx(), i.xy(), i.xz(), i.xy(), i.yy(), i.yz(), i.xz(), i.yz(), i.zz()));
+        mass.setC(new DVector3(0, 0, 0));
+        body.setMass(mass);
+        Vec3 p = b.origin().plus(com);
+        body.setPosition(p.x(), p.y(), p.z());
+        body.setData(b.index());
+        if (b.collides()) {
+            for (Shape s : b.shapes()) {
+                DGeom geom = createGeom(handSpace, s);
+                geom.setBody(body);
+                applyOffset(geom, s, com);
+                geom.setData(new GeomTag(Kind.HAND, b.index()));
+            }
+        }
+        return body;
+    }
+
+    /** An ODE geometry for a shape; capsules and cylinders are along the geom's z axis. */
+    private static DGeom createGeom(DSpace space, Shape s) {
+        if (s instanceof Shape.Capsule c) {
+            return OdeHelper.createCapsule(space, c.radius(), c.length());
+        }
+        if (s instanceof Shape.Cylinder c) {
+            return OdeHelper.createCylinder(space, c.radius(), c.length());
+        }
+        if (s instanceof Shape.Box b) {
+            return OdeHelper.createBox(space, b.size().x(), b.size().y(), b.size().z());
+        }
+        Shape.Sphere sp = (Shape.Sphere) s;
+        return OdeHelper.createSphere(space, sp.radius());
+    }
+
+    /** Places a body-attached geom relative to the ODE body, whose origin is the centre of mass. */
+    private static void applyOffset(DGeom geom, Shape s, Vec3 com) {
+        Vec3 centre;
+        Quat rot = Quat.IDENTITY;
+        if (s instanceof Shape.Capsule c) {
+            centre = c.centroid();
+            rot = Quat.between(Vec3.Z, c.b().minus(c.a()).normalized());
+        } else if (s instanceof Shape.Cylinder c) {
+            centre = c.centroid();
+            rot = Quat.between(Vec3.Z, c.b().minus(c.a()).normalized());
+        } else if (s instanceof Shape.Box b) {
+            centre = b.center();
+            rot = b.rotation();
+        } else {
+            centre = ((Shape.Sphere) s).center();
+        }
+        Vec3 off = centre.minus(com);
+        geom.setOffsetPosition(off.x(), off.y(), off.z());
+        geom.setOffsetQuaternion(new DQuaternion(rot.w(), rot.x(), rot.y(), rot.z()));
+    }
+
+    private DBody parentBody(Joint j) {
+        return j.isRoot() ? torso : bodies[j.parent()];
+    }
+
+    /**
+     * Creates the engine joint while every body is in the zero configuration. ODE measures a
+     * joint angle as the parent's rotation relative to the child about the axis, the opposite of
+     * {@link Kinematics}; giving ODE the negated axes makes its angles, and so its stops, ours.
+     */
+    private void createJoint(Joint j) {
+        DBody parent = parentBody(j);
+        DBody child = bodies[j.child()];
+        Vec3 a = j.anchor();
+        Dof d0 = model.dofs().get(j.firstDof());
+        switch (j.type()) {
+            case HINGE -> {
+                DHingeJoint h = OdeHelper.createHingeJoint(world);
+                h.attach(parent, child);
+                h.setAnchor(a.x(), a.y(), a.z());
+                h.setAxis(-d0.axis().x(), -d0.axis().y(), -d0.axis().z());
+                h.setParamHiStop(d0.upper());
+                h.setParamLoStop(d0.lower());
+            }
+            case UNIVERSAL -> {
+                Dof d1 = model.dofs().get(j.firstDof() + 1);
+                DUniversalJoint u = OdeHelper.createUniversalJoint(world);
+                u.attach(parent, child);
+                u.setAnchor(a.x(), a.y(), a.z());
+                u.setAxis1(-d0.axis().x(), -d0.axis().y(), -d0.axis().z());
+                u.setAxis2(-d1.axis().x(), -d1.axis().y(), -d1.axis().z());
+                u.setParam(DJoint.PARAM_N.dParamHiStop1, d0.upper());
+                u.setParam(DJoint.PARAM_N.dParamLoStop1, d0.lower());
+                u.setParam(DJoint.PARAM_N.dParamHiStop2, d1.upper());
+                u.setParam(DJoint.PARAM_N.dParamLoStop2, d1.lower());
+            }
+            case BALL -> {
+                DBallJoint ball = OdeHelper.createBallJoint(world);
+                ball.attach(parent, child);
+                ball.setAnchor(a.x(), a.y(), a.z());
+                // limits on the three Euler angles: a user-mode motor whose axes and angles we
+                // set every step from our own decomposition
+                DAMotorJoint m = OdeHelper.createAMotorJoint(world);
+                m.attach(parent, child);
+                m.setMode(DAMotorJoint.AMotorMode.dAMotorUser);
+                m.setNumAxes(3);
+                for (int s = 0; s < 3; s++) {
+                    Dof d = model.dofs().get(j.firstDof() + s);
+                    m.setAxis(s, 0, -d.axis().x(), -d.axis().y(), -d.axis().z());
+                    m.setParam(hiStop(s), d.upper());
+                    m.setParam(loStop(s), d.lower());
+                }
+                limitMotors[j.index()] = m;
+            }
+        }
+    }
+
+    private static DJoint.PARAM_N loStop(int axis) {
+        return switch (axis) {
+            case 0 -> DJoint.PARAM_N.dParamLoStop1;
+            case 1 -> DJoint.PARAM_N.dParamLoStop2;
+            default -> DJoint.PARAM_N.dParamLoStop3;
+        };
+    }
+
+    private static DJoint.PARAM_N hiStop(int axis) {
+        return switch (axis) {
+            case 0 -> DJoint.PARAM_N.dParamHiStop1;
+            case 1 -> DJoint.PARAM_N.dParamHiStop2;
+            default -> DJoint.PARAM_N.dParamHiStop3;
+        };
+    }
+
+    // ---- Simulator --------------------------------------------------------------------------
+
+    @Override
+    public HandModel model() {
+        return model;
+    }
+
+    @Override
+    public SimConfig config() {
+        return config;
+    }
+
+    @Override
+    public double time() {
+        return time;
+    }
+
+    @Override
+    public long stepCount() {
+        return steps;
+    }
+
+    @Override
+    public void reset(double[] angles, long seed) {
+        if (angles.length != model.dofCount()) {
+            throw new IllegalArgumentException("expected " + model.dofCount() + " joint angles, got " + angles.length);
+        }
+        // quickStep shuffles constraints with ODE's process-wide generator: reseed it
+        DMisc.dRandSetSeed(seed);
+        removeObject();
+        for (DGeom b : boxes) {
+            b.destroy();
+        }
+        boxes.clear();
+        boxSpecs.clear();
+        contactGroup.empty();
+        Frame[] frames = kin.forward(angles);
+        for (Body b : model.bodies()) {
+            DBody body = bodies[b.index()];
+            Frame f = frames[b.index()];
+            Vec3 p = f.pointToWorld(centreOfMass[b.index()]);
+            body.setPosition(p.x(), p.y(), p.z());
+            Quat r = f.rotation();
+            body.setQuaternion(new DQuaternion(r.w(), r.x(), r.y(), r.z()));
+            body.setLinearVel(0, 0, 0);
+            body.setAngularVel(0, 0, 0);
+            body.setForce(0, 0, 0);
+            body.setTorque(0, 0, 0);
+        }
+        java.util.Arrays.fill(tau, 0);
+        time = 0;
+        steps = 0;
+        contacts.clear(0);
+        touchesGround = false;
+        touchesBox = false;
+        updateJointState();
+    }
+
+    @Override
+    public void readJoints(double[] angles, double[] rates) {
+        System.arraycopy(q, 0, angles, 0, q.length);
+        System.arraycopy(qd, 0, rates, 0, qd.length);
+    }
+
+    @Override
+    public void setJointTorques(double[] torques) {
+        System.arraycopy(torques, 0, tau, 0, tau.length);
+    }
+
+    @Override
+    public void step() {
+        contacts.clear(time);
+        touchesGround = false;
+        touchesBox = false;
+        applyJointTorques();
+        updateLimitMotors();
+        collide();
+        world.quickStep(config.timeStep());
+        contactGroup.empty();
+        time += config.timeStep();
+        steps++;
+        updateJointState();
+        checkDiverged();
+    }
+
+    /** eq. (3): each DOF's torque about its current world axis, equal and opposite on the two bodies. */
+    private void applyJointTorques() {
+        for (Joint j : model.joints()) {
+            DBody parent = parentBody(j);
+            Vec3[] axes = kin.worldAxes(j, rotation(parent), q);
+            double tx = 0, ty = 0, tz = 0;
+            for (int s = 0; s < axes.length; s++) {
+                double t = tau[j.firstDof() + s];
+                tx += t * axes[s].x();
+                ty += t * axes[s].y();
+                tz += t * axes[s].z();
+            }
+            bodies[j.child()].addTorque(tx, ty, tz);
+            if (!j.isRoot()) {
+                parent.addTorque(-tx, -ty, -tz);
+            }
+        }
+    }
+
+    /** Feeds the ball joints' limit motors the current Euler axes (negated, see createJoint) and angles. */
+    private void updateLimitMotors() {
+        for (Joint j : model.joints()) {
+            DAMotorJoint m = limitMotors[j.index()];
+            if (m == null) {
+                continue;
+            }
+            Vec3[] axes = kin.worldAxes(j, rotation(parentBody(j)), q);
+            for (int s = 0; s < 3; s++) {
+                m.setAxis(s, 0, -axes[s].x(), -axes[s].y(), -axes[s].z());
+                m.setAngle(s, q[j.firstDof() + s]);
+            }
+        }
+    }
+
+    /** Joint angles and rates from the bodies' orientations and angular velocities. */
+    private void updateJointState() {
+        for (Joint j : model.joints()) {
+            DBody parent = parentBody(j);
+            DBody child = bodies[j.child()];
+            Quat rp = rotation(parent);
+            Quat rc = rotation(child);
+            kin.decompose(j, rp.conjugate().mul(rc), q);
+            Vec3 omega = rp.inverseRotate(vec(child.getAngularVel()).minus(vec(parent.getAngularVel())));
+            kin.rates(j, q, omega, qd);
+        }
+    }
+
+    private void checkDiverged() {
+        for (int i = 0; i < q.length; i++) {
+            if (!Double.isFinite(q[i]) || !Double.isFinite(qd[i])) {
+                throw new SimulationDiverged("joint " + model.dofs().get(i).name() + " is not finite at t = " + time + " s");
+            }
+        }
+        if (object != null) {
+            DVector3C v = object.getLinearVel();
+            DVector3C p = object.getPosition();
+            double speed = Math.sqrt(v.get0() * v.get0() + v.get1() * v.get1() + v.get2() * v.get2());
+            if (!(speed < DIVERGED_SPEED) || !Double.isFinite(p.get0() + p.get1() + p.get2())) {
+                throw new SimulationDiverged("object speed " + speed + " m/s at t = " + time + " s");
+            }
+        }
+    }
+
+    // ---- collisions -------------------------------------------------------------------------
+
+    private void collide() {
+        for (DGeom g : objectGeoms) {
+            OdeHelper.spaceCollide2(g, handSpace, null, nearCallback);
+            collidePair(g, ground);
+            for (DGeom box : boxes) {
+                collidePair(g, box);
+            }
+        }
+    }
+
+    /** Generates the contacts of one geometry pair, with the paper's per-contact ERP and CFM. */
+    private void collidePair(DGeom o1, DGeom o2) {
+        int n = OdeHelper.collide(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer());
+        if (n == 0) {
+            return;
+        }
+        GeomTag t1 = (GeomTag) o1.getData();
+        GeomTag t2 = (GeomTag) o2.getData();
+        GeomTag other = t1.kind() == Kind.OBJECT ? t2 : t1;
+        double erp, cfm;
+        if (other.kind() == Kind.HAND) {
+            erp = handErp[other.body()];
+            cfm = handCfm[other.body()];
+        } else {
+            erp = staticErp;
+            cfm = staticCfm;
+            if (other.kind() == Kind.GROUND) {
+                touchesGround = true;
+            } else {
+                touchesBox = true;
+            }
+        }
+        DBody b1 = o1.getBody();
+        DBody b2 = o2.getBody();
+        for (int i = 0; i < n; i++) {
+            DContact c = contactBuffer.get(i);
+            c.surface.mode = OdeConstants.dContactSoftERP | OdeConstants.dContactSoftCFM | OdeConstants.dContactApprox1;
+            c.surface.mu = config.friction();
+            c.surface.soft_erp = erp;
+            c.surface.soft_cfm = cfm;
+            OdeHelper.createContactJoint(world, contactGroup, c).attach(b1, b2);
+            if (other.kind() == Kind.HAND) {
+                contacts.add(other.body(), c.geom.depth);
+            }
+        }
+    }
+
+    // ---- bodies -----------------------------------------------------------------------------
+
+    @Override
+    public Frame bodyFrame(int body) {
+        DBody b = bodies[body];
+        Quat r = rotation(b);
+        Vec3 origin = vec(b.getPosition()).minus(r.rotate(centreOfMass[body]));
+        return new Frame(origin, r);
+    }
+
+    @Override
+    public Vec3 pointVelocity(int body, Vec3 local) {
+        Vec3 rel = local.minus(centreOfMass[body]);
+        DVector3 out = new DVector3();
+        bodies[body].getRelPointVel(rel.x(), rel.y(), rel.z(), out);
+        return vec(out);
+    }
+
+    @Override
+    public Vec3 angularVelocity(int body) {
+        return vec(bodies[body].getAngularVel());
+    }
+
+    // ---- the object and the scenery -----------------------------------------------------------
+
+    @Override
+    public void spawnObject(ObjectSpec spec, RigidState state) {
+        removeObject();
+        object = OdeHelper.createBody(world);
+        DMass mass = OdeHelper.createMass();
+        mass.setMass(spec.mass().mass());
+        var i = spec.mass().inertia();
+        mass.setI(new DMatrix3(i.xx(), i.xy(), i.xz(), i.xy(), i.yy(), i.yz(), i.xz(), i.yz(), i.zz()));
+        mass.setC(new DVector3(0, 0, 0));
+        object.setMass(mass);
+        for (Shape s : spec.shapes()) {
+            DGeom g = createGeom(null, s);
+            g.setBody(object);
+            applyOffset(g, s, Vec3.ZERO);
+            g.setData(new GeomTag(Kind.OBJECT, -1));
+            objectGeoms.add(g);
+        }
+        objectSpec = spec;
+        setObjectState(state);
+        // contact ERP/CFM depend on the two masses (sec. 4.1); static geometry counts as 0 kg
+        double m = spec.mass().mass();
+        for (Body b : model.bodies()) {
+            handErp[b.index()] = config.contactErp(m, b.mass().mass());
+            handCfm[b.index()] = config.contactCfm(m, b.mass().mass());
+        }
+        staticErp = config.contactErp(m, 0);
+        staticCfm = config.contactCfm(m, 0);
+    }
+
+    private void setObjectState(RigidState s) {
+        Vec3 p = s.position();
+        Quat r = s.orientation();
+        object.setPosition(p.x(), p.y(), p.z());
+        object.setQuaternion(new DQuaternion(r.w(), r.x(), r.y(), r.z()));
+        object.setLinearVel(s.velocity().x(), s.velocity().y(), s.velocity().z());
+        object.setAngularVel(s.angularVelocity().x(), s.angularVelocity().y(), s.angularVelocity().z());
+    }
+
+    private void removeObject() {
+        for (DGeom g : objectGeoms) {
+            g.destroy();
+        }
+        objectGeoms.clear();
+        if (object != null) {
+            object.destroy();
+            object = null;
+            objectSpec = null;
+        }
+    }
+
+    @Override
+    public boolean hasObject() {
+        return object != null;
+    }
+
+    @Override
+    public ObjectSpec objectSpec() {
+        requireObject();
+        return objectSpec;
+    }
+
+    @Override
+    public RigidState objectState() {
+        requireObject();
+        return new RigidState(vec(object.getPosition()), rotation(object), vec(object.getLinearVel()),
+                vec(object.getAngularVel()));
+    }
+
+    private void requireObject() {
+        if (object == null) {
+            throw new IllegalStateException("no object in the world");
+        }
+    }
+
+    @Override
+    public void addStaticBox(Vec3 center, Vec3 size) {
+        DBox box = OdeHelper.createBox(null, size.x(), size.y(), size.z());
+        box.setPosition(center.x(), center.y(), center.z());
+        box.setData(new GeomTag(Kind.BOX, -1));
+        boxes.add(box);
+        boxSpecs.add(new WorldSnapshot.StaticBox(center, size));
+    }
+
+    @Override
+    public List<WorldSnapshot.StaticBox> staticBoxes() {
+        return List.copyOf(boxSpecs);
+    }
+
+    @Override
+    public ContactReport handContacts() {
+        return contacts;
+    }
+
+    @Override
+    public boolean objectTouchesGround() {
+        return touchesGround;
+    }
+
+    @Override
+    public boolean objectTouchesBox() {
+        return touchesBox;
+    }
+
+    @Override
+    public void close() {
+        removeObject();
+        for (DGeom b : boxes) {
+            b.destroy();
+        }
+        contactGroup.destroy();
+        ground.destroy();
+        handSpace.destroy();
+        world.destroy();
+    }
+
+    // ---- conversions ------------------------------------------------------------------------
+
+    private static Quat rotation(DBody b) {
+        DQuaternionC r = b.getQuaternion();
+        return new Quat(r.get0(), r.get1(), r.get2(), r.get3());
+    }
+
+    private static Vec3 vec(DVector3C v) {
+        return new Vec3(v.get0(), v.get1(), v.get2());
+    }
+}
