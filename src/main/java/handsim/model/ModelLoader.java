@@ -120,6 +120,7 @@ public final class ModelLoader {
                     }
                 }
             }
+            orthonormalize(dofs, joint.firstDof(), axes.size());
             j.requireNoUnknownFields();
             jointNames.put(jointName, joint.index());
             joints.add(joint);
@@ -147,6 +148,23 @@ public final class ModelLoader {
         Map<String, Pose> poses = parsePoses(root, dofNames, dofs);
         root.requireNoUnknownFields();
         return new HandModel(name, bodies, joints, dofs, sites, poses, breakdown);
+    }
+
+    /**
+     * Makes the axes of a multi-DOF joint exactly orthonormal (Gram-Schmidt in DOF order) after
+     * they passed the perpendicularity check, so that rounding in the file does not bias rates.
+     */
+    private static void orthonormalize(List<Dof> dofs, int first, int count) {
+        for (int s = 1; s < count; s++) {
+            Dof d = dofs.get(first + s);
+            Vec3 a = d.axis();
+            for (int t = 0; t < s; t++) {
+                Vec3 b = dofs.get(first + t).axis();
+                a = a.minus(b.times(a.dot(b)));
+            }
+            dofs.set(first + s, new Dof(d.index(), d.name(), d.joint(), d.slot(), a.normalized(), d.lower(), d.upper(),
+                    d.torqueMin(), d.torqueMax()));
+        }
     }
 
     /** "torqueLimit": a number L (symmetric, [-L, L]) or [min, max] with min < 0 < max. */

@@ -1,0 +1,66 @@
+package handsim.task;
+
+import handsim.control.PdController;
+import handsim.sim.Simulator;
+
+/**
+ * The step order of every run, in one place: read the joints, compute the PD torques of eq. (3)
+ * toward the current targets, apply them, take one physics step. The controller writes
+ * {@link #targets()} at its own rate, a whole number of physics steps.
+ */
+public final class ServoLoop {
+
+    private final Simulator sim;
+    private final PdController pd;
+    private final double[] q;
+    private final double[] qd;
+    private final double[] tau;
+    private final double[] targets;
+    private double peakTorqueRatio;
+
+    public ServoLoop(Simulator sim, PdController pd) {
+        this.sim = sim;
+        this.pd = pd;
+        int n = sim.model().dofCount();
+        q = new double[n];
+        qd = new double[n];
+        tau = new double[n];
+        targets = new double[n];
+    }
+
+    public Simulator sim() {
+        return sim;
+    }
+
+    /** The joint-angle targets (rad, model DOF order) the PD tracks; write into it. */
+    public double[] targets() {
+        return targets;
+    }
+
+    /** One physics step with PD torques toward {@link #targets()}. */
+    public void step() {
+        sim.readJoints(q, qd);
+        pd.torques(q, qd, targets, tau);
+        for (int i = 0; i < tau.length; i++) {
+            peakTorqueRatio = Math.max(peakTorqueRatio, sim.model().dofs().get(i).torqueRatio(tau[i]));
+        }
+        sim.setJointTorques(tau);
+        sim.step();
+    }
+
+    /** Advances by {@code steps} physics steps. */
+    public void step(int steps) {
+        for (int i = 0; i < steps; i++) {
+            step();
+        }
+    }
+
+    /** Largest |torque| / strength limit seen since the last {@link #resetPeakTorqueRatio()} (1 = at the limit). */
+    public double peakTorqueRatio() {
+        return peakTorqueRatio;
+    }
+
+    public void resetPeakTorqueRatio() {
+        peakTorqueRatio = 0;
+    }
+}

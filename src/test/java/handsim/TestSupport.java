@@ -1,0 +1,66 @@
+package handsim;
+
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.PdController;
+import handsim.control.PdGains;
+import handsim.math.Quat;
+import handsim.math.Vec3;
+import handsim.model.HandModel;
+import handsim.model.ModelLoader;
+import handsim.sim.ObjectSpec;
+import handsim.sim.SimConfig;
+import java.util.SplittableRandom;
+
+/** Shared loading of the project's model and configs, and tolerance helpers, for tests. */
+public final class TestSupport {
+
+    private static HandModel model;
+
+    private TestSupport() {
+    }
+
+    public static synchronized HandModel model() {
+        if (model == null) {
+            model = ModelLoader.load(Home.defaultModel());
+        }
+        return model;
+    }
+
+    public static SimConfig simConfig() {
+        return SimConfig.load(Home.resolve("configs/sim.json"));
+    }
+
+    public static PdController pd(HandModel m) {
+        return new PdController(m, PdGains.parse(Json.load(Home.resolve("configs/control.json")).get("pd")));
+    }
+
+    public static ObjectSpec object(String name) {
+        return ObjectSpec.load(Home.resolve("configs/objects/" + name + ".json"));
+    }
+
+    /** Uniform random joint angles inside the limits, shrunk by {@code margin} rad on each side. */
+    public static double[] randomPose(HandModel m, SplittableRandom rng, double margin) {
+        double[] q = new double[m.dofCount()];
+        for (int i = 0; i < q.length; i++) {
+            var d = m.dofs().get(i);
+            double lo = d.lower() + margin, hi = d.upper() - margin;
+            q[i] = lo + rng.nextDouble() * (hi - lo);
+        }
+        return q;
+    }
+
+    public static Vec3 randomUnit(SplittableRandom rng) {
+        while (true) {
+            Vec3 v = new Vec3(2 * rng.nextDouble() - 1, 2 * rng.nextDouble() - 1, 2 * rng.nextDouble() - 1);
+            double n = v.norm();
+            if (n > 0.1 && n < 1) {
+                return v.times(1 / n);
+            }
+        }
+    }
+
+    public static Quat randomRotation(SplittableRandom rng) {
+        return Quat.fromAxisAngle(randomUnit(rng), Math.PI * rng.nextDouble());
+    }
+}
