@@ -32,7 +32,7 @@ public final class TestSupport {
     }
 
     public static PdController pd(HandModel m) {
-        return new PdController(m, PdGains.parse(Json.load(Home.resolve("configs/control.json")).get("pd")));
+        return new PdController(m, PdGains.parse(Json.load(Home.resolve("configs/controller.json")).get("pd")));
     }
 
     public static ObjectSpec object(String name) {

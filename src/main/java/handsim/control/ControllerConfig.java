@@ -1,0 +1,68 @@
+package handsim.control;
+
+import handsim.config.Json;
+import java.nio.file.Path;
+
+/**
+ * Everything tunable of the nominal controller, from {@code configs/controller.json}. The
+ * paper's FSM timing figure (Fig. 3) is missing from the sources; the durations here are our
+ * choice, documented in the file.
+ *
+ * @param periodSteps physics steps per controller tick (IK and FSM rate)
+ * @param catchMinDuration shortest CATCH state (s): a later interception is planned if the
+ *     object would cross the plane sooner
+ * @param middleDuration MIDDLE state length (s)
+ * @param throwDuration THROW state length (s)
+ * @param gobackDuration GOBACK state length (s)
+ * @param interceptionHeight height (m) of the horizontal interception plane the object's centre
+ *     is caught on
+ * @param catchVelocityFraction palm velocity at interception as a fraction of the object's (0.7)
+ * @param restPlaneHeight height of the rest plane GOBACK returns to (0.6 m)
+ * @param throwEndSpeedFactor palm speed at the end of THROW = factor * |dOffset| / throwDuration
+ * @param openTime, closeTime, neutralTime hand pose transition times (s)
+ */
+public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
+        double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
+        double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
+        double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows) {
+
+    public static ControllerConfig load(Path file) {
+        return parse(Json.load(file));
+    }
+
+    public static ControllerConfig parse(Json j) {
+        j.allow("comment");
+        Json fsm = j.get("fsm");
+        fsm.allow("comment");
+        Json catching = j.get("catch");
+        catching.allow("comment");
+        Json poses = j.get("handPoses");
+        poses.allow("comment");
+        Json throwing = j.get("throw");
+        throwing.allow("comment");
+        ControllerConfig c = new ControllerConfig(
+                PdGains.parse(j.get("pd")),
+                IkConfig.parse(j.get("ik")),
+                j.integer("periodSteps", 1, 1000),
+                fsm.positive("catchMinDuration"),
+                fsm.positive("middleDuration"),
+                fsm.positive("throwDuration"),
+                fsm.positive("gobackDuration"),
+                catching.number("interceptionHeight"),
+                catching.number("velocityFraction", 0, 1),
+                catching.number("restPlaneHeight"),
+                throwing.number("endSpeedFactor", 0, 3),
+                poses.positive("openTime"),
+                poses.positive("closeTime"),
+                poses.positive("neutralTime"),
+                ThrowSpace.parse(throwing.get("space")),
+                NominalThrows.parse(throwing.get("nominal")));
+        for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
+            node.requireNoUnknownFields();
+        }
+        if (c.nominalThrows.entries().stream().anyMatch(e -> !c.throwSpace.contains(e.params()))) {
+            throw throwing.fieldError("nominal", "every nominal throw must lie inside throw.space");
+        }
+        return c;
+    }
+}

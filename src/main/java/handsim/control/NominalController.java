@@ -1,0 +1,153 @@
+package handsim.control;
+
+import handsim.kin.Frame;
+import handsim.kin.Kinematics;
+import handsim.math.Hermite;
+import handsim.math.Quat;
+import handsim.math.Vec3;
+import handsim.model.HandModel;
+import handsim.model.Site;
+import handsim.sim.ObjectSpec;
+
+/**
+ * The paper's nominal catch-and-throw controller (sec. 3). A finite state machine CATCH ->
+ * MIDDLE -> THROW -> GOBACK -> CATCH, timed by the elapsed time in each state; each state moves
+ * the palm centre along a Hermite curve (eq. 1) with SLERP rotation, tracked by damped least
+ * squares IK (eq. 2); the fingers follow the neutral / open / closed poses. The hand closes at
+ * the first hand-object contact since CATCH began; THROW's curve comes from a {@link
+ * ThrowPolicy}. Engine-free: it reads an {@link Observation} and its {@link ControllerState}.
+ */
+public final class NominalController {
+
+    private final HandModel model;
+    private final ControllerConfig config;
+    private final ObjectSpec object;
+    private final ThrowPolicy throwPolicy;
+    private final Kinematics kin;
+    private final Site palm;
+    private final DlsIk ik;
+    private final HandPoses poses;
+    private final CatchPlanner planner;
+    private final double[] neutralPose;
+    private final Frame neutralPalm;
+
+    /**
+     * @param closedPose the model pose used as "closed" for this object
+     * @param gravity world gravity, for predicting the object's flight
+     */
+    public NominalController(HandModel model, ControllerConfig config, ObjectSpec object, String closedPose,
+            ThrowPolicy throwPolicy, Vec3 gravity) {
+        this.model = model;
+        this.config = config;
+        this.object = object;
+        this.throwPolicy = throwPolicy;
+        this.kin = new Kinematics(model);
+        this.palm = model.site("palm_center");
+        this.ik = new DlsIk(kin, palm, config.ik());
+        this.poses = new HandPoses(kin, ik.dofs(), closedPose);
+        this.planner = new CatchPlanner(new Ballistics(gravity), config.interceptionHeight(),
+                config.catchVelocityFraction(), config.catchMinDuration());
+        this.neutralPose = model.poseVector("neutral");
+        this.neutralPalm = kin.siteFrame(palm, neutralPose);
+    }
+
+    public ControllerConfig config() {
+        return config;
+    }
+
+    /** The palm centre's frame in the neutral pose: where MIDDLE ends and THROW starts. */
+    public Frame neutralPalm() {
+        return neutralPalm;
+    }
+
+    /** A fresh state beginning in CATCH at the observation's time, planned from its object state. */
+    public ControllerState start(Observation obs) {
+        ControllerState s = new ControllerState(model.dofCount());
+        System.arraycopy(obs.q(), 0, s.ikSolution, 0, s.ikSolution.length);
+        System.arraycopy(obs.q(), 0, s.targets, 0, s.targets.length);
+        s.handPose = HandPose.NEUTRAL;
+        s.weightsFrom[HandPose.NEUTRAL.ordinal()] = 1;
+        System.arraycopy(obs.q(), 0, s.poseFrom, 0, s.poseFrom.length);
+        enter(Phase.CATCH, obs, s);
+        update(obs, s);
+        return s;
+    }
+
+    /** Advances the state machine to the observation's time and writes the new targets. */
+    public void update(Observation obs, ControllerState s) {
+        // the hand closes at the first hand-object contact since CATCH began (sec. 3.1)
+        if (obs.handTouchedObject() && !s.closedOnContact && (s.phase == Phase.CATCH || s.phase == Phase.MIDDLE)) {
+            s.closedOnContact = true;
+            blendTo(HandPose.CLOSED, config.closeTime(), obs.time(), s);
+        }
+        // state transitions on the elapsed time in the state (sec. 3.1, Fig. 3)
+        if (obs.time() - s.phaseStart >= duration(s)) {
+            enter(s.phase.next(), obs, s);
+        }
+        double t = obs.time() - s.phaseStart;
+        if (s.phase == Phase.THROW && t >= s.currentThrow.tOpen() && s.handPose != HandPose.OPEN) {
+            blendTo(HandPose.OPEN, config.openTime(), obs.time(), s);
+        }
+        // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
+        ik.solve(s.ikSolution, s.trajectory.at(t));
+        for (int d : ik.dofs()) {
+            s.targets[d] = s.ikSolution[d];
+        }
+        double w = Math.max(0, Math.min(1, (obs.time() - s.poseStart) / s.poseDuration));
+        poses.slerp(s.poseFrom, poses.pose(s.handPose), w, s.targets);
+    }
+
+    private double duration(ControllerState s) {
+        return switch (s.phase) {
+            case CATCH -> s.plan.duration();
+            case MIDDLE -> config.middleDuration();
+            case THROW -> config.throwDuration();
+            case GOBACK -> config.gobackDuration();
+        };
+    }
+
+    /** Plans the curve of a new state from the hand's current position and velocity (sec. 3.6). */
+    private void enter(Phase phase, Observation obs, ControllerState s) {
+        s.phase = phase;
+        s.phaseStart = obs.time();
+        Vec3 p0 = obs.palm().origin();
+        Vec3 v0 = obs.palmVelocity();
+        Quat r0 = obs.palm().rotation();
+        switch (phase) {
+            case CATCH -> {
+                CatchPlanner.Plan plan = planner.plan(obs.object(), object, neutralPalm.rotation());
+                s.plan = plan;
+                s.trajectory = new PalmTrajectory(new Hermite(p0, v0, plan.palmTarget().origin(), plan.palmVelocity(),
+                        plan.duration()), r0, plan.palmTarget().rotation());
+                s.closedOnContact = false;
+                blendTo(HandPose.OPEN, config.openTime(), obs.time(), s);
+            }
+            case MIDDLE -> s.trajectory = new PalmTrajectory(new Hermite(p0, v0, neutralPalm.origin(), Vec3.ZERO,
+                    config.middleDuration()), r0, neutralPalm.rotation());
+            case THROW -> {
+                ThrowParameters p = throwPolicy.decide(obs);
+                s.currentThrow = p;
+                double tt = config.throwDuration();
+                Vec3 endVelocity = p.dOffset().times(config.throwEndSpeedFactor() / tt);
+                Quat end = Quat.fromRotationVector(p.rTarget()).mul(neutralPalm.rotation());
+                s.trajectory = new PalmTrajectory(new Hermite(p0, v0, p0.plus(p.dOffset()), endVelocity, tt), r0, end);
+            }
+            case GOBACK -> {
+                Vec3 rest = new Vec3(p0.x(), config.restPlaneHeight(), p0.z());
+                s.trajectory = new PalmTrajectory(new Hermite(p0, v0, rest, Vec3.ZERO, config.gobackDuration()), r0,
+                        neutralPalm.rotation());
+                blendTo(HandPose.NEUTRAL, config.neutralTime(), obs.time(), s);
+            }
+        }
+    }
+
+    /** Starts a SLERP of the finger targets from where they are now to {@code pose}. */
+    private void blendTo(HandPose pose, double duration, double time, ControllerState s) {
+        double[] w = s.poseWeights(time);
+        s.weightsFrom = w;
+        System.arraycopy(s.targets, 0, s.poseFrom, 0, s.targets.length);
+        s.handPose = pose;
+        s.poseStart = time;
+        s.poseDuration = duration;
+    }
+}

@@ -1,0 +1,14 @@
+package handsim.control;
+
+import handsim.kin.Frame;
+import handsim.math.Vec3;
+import handsim.sim.RigidState;
+
+/**
+ * What the controller sees at a tick: time (s), joint angles and rates (model DOF order), the
+ * palm centre's world frame and velocity, the object's state, and whether the hand touched the
+ * object since the previous tick (the contact joints of sec. 4.1).
+ */
+public record Observation(double time, double[] q, double[] qd, Frame palm, Vec3 palmVelocity, RigidState object,
+        boolean handTouchedObject) {
+}
