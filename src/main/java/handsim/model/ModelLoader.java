@@ -104,9 +104,13 @@ public final class ModelLoader {
                             + range[0] + ", " + range[1] + "]");
                 }
                 double[] torque = torqueLimits(d);
+                double passive = d.number("passiveDamping", 0.0);
+                if (passive < 0) {
+                    throw d.fieldError("passiveDamping", "must be >= 0 N m s/rad, got " + passive);
+                }
                 d.requireNoUnknownFields();
                 Dof dof = new Dof(dofs.size(), dofName, joint.index(), s, axis, Math.toRadians(range[0]),
-                        Math.toRadians(range[1]), torque[0], torque[1]);
+                        Math.toRadians(range[1]), torque[0], torque[1], passive);
                 dofNames.put(dofName, dof.index());
                 dofs.add(dof);
                 axes.add(axis);
@@ -163,7 +167,7 @@ public final class ModelLoader {
                 a = a.minus(b.times(a.dot(b)));
             }
             dofs.set(first + s, new Dof(d.index(), d.name(), d.joint(), d.slot(), a.normalized(), d.lower(), d.upper(),
-                    d.torqueMin(), d.torqueMax()));
+                    d.torqueMin(), d.torqueMax(), d.passiveDamping()));
         }
     }
 

@@ -89,16 +89,9 @@ public final class CatchThrowEpisode {
         return loops;
     }
 
-    /** Caught loops after loop 0 before the first drop (the catch-throw-catch cycles completed). */
-    public int loopsCompleted() {
-        int n = 0;
-        for (LoopRecord r : loops) {
-            if (!r.caught()) {
-                break;
-            }
-            n = r.index();
-        }
-        return n;
+    /** The episode so far, as a result. */
+    public EpisodeResult result(long seed) {
+        return new EpisodeResult(seed, loops, status);
     }
 
     /** The observation the controller sees now. */

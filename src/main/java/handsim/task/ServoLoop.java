@@ -1,11 +1,13 @@
 package handsim.task;
 
 import handsim.control.PdController;
+import handsim.model.Dof;
 import handsim.sim.Simulator;
 
 /**
  * The step order of every run, in one place: read the joints, compute the PD torques of eq. (3)
- * toward the current targets, apply them, take one physics step. The controller writes
+ * toward the current targets, add each joint's passive viscous torque, apply them, take one
+ * physics step. The controller writes
  * {@link #targets()} at its own rate, a whole number of physics steps.
  */
 public final class ServoLoop {
@@ -42,7 +44,9 @@ public final class ServoLoop {
         sim.readJoints(q, qd);
         pd.torques(q, qd, targets, tau);
         for (int i = 0; i < tau.length; i++) {
-            peakTorqueRatio = Math.max(peakTorqueRatio, sim.model().dofs().get(i).torqueRatio(tau[i]));
+            Dof d = sim.model().dofs().get(i);
+            peakTorqueRatio = Math.max(peakTorqueRatio, d.torqueRatio(tau[i]));
+            tau[i] -= d.passiveDamping() * qd[i];
         }
         sim.setJointTorques(tau);
         sim.step();

@@ -1,0 +1,59 @@
+package handsim.task;
+
+import handsim.control.ControllerConfig;
+import handsim.control.NominalController;
+import handsim.control.PdController;
+import handsim.control.ThrowPolicy;
+import handsim.sim.ObjectSpec;
+import handsim.sim.RigidState;
+import handsim.sim.Simulator;
+import java.util.SplittableRandom;
+
+/**
+ * Seeded catch-and-throw episodes: each seed draws the object's size and mass within its
+ * tolerance and a launch from the {@link LaunchDistribution}, then runs loops until a drop or
+ * {@code maxLoops} throws. The same seed always gives the same episode.
+ */
+public final class CatchEvaluation {
+
+    /** Called after every finished loop. */
+    @FunctionalInterface
+    public interface LoopListener {
+        void onLoop(long seed, LoopRecord loop);
+    }
+
+    private final ControllerConfig controllerConfig;
+    private final EpisodeLimits limits;
+    private final LaunchDistribution launches;
+    private final ObjectSpec object;
+    private final ThrowPolicy throwPolicy;
+
+    public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
+            ObjectSpec object, ThrowPolicy throwPolicy) {
+        this.controllerConfig = controllerConfig;
+        this.limits = limits;
+        this.launches = launches;
+        this.object = object;
+        this.throwPolicy = throwPolicy;
+    }
+
+    /** Runs the episode of {@code seed} on {@code sim} (which it resets). */
+    public EpisodeResult run(Simulator sim, long seed, int maxLoops, LoopListener listener) {
+        SplittableRandom rng = new SplittableRandom(seed);
+        ObjectSpec thrown = object.randomized(rng);
+        NominalController controller = new NominalController(sim.model(), controllerConfig, thrown, "closed",
+                throwPolicy, sim.config().gravity());
+        RigidState launch = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
+                thrown, sim.config().gravity());
+        CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
+                controller, limits);
+        episode.start(thrown, launch, seed);
+        while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
+            LoopRecord r = episode.tick();
+            if (r != null && listener != null) {
+                listener.onLoop(seed, r);
+            }
+        }
+        return episode.result(seed);
+    }
+}
