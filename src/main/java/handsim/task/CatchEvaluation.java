@@ -39,6 +39,18 @@ public final class CatchEvaluation {
 
     /** Runs the episode of {@code seed} on {@code sim} (which it resets). */
     public EpisodeResult run(Simulator sim, long seed, int maxLoops, LoopListener listener) {
+        CatchThrowEpisode episode = start(sim, seed);
+        while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
+            LoopRecord r = episode.tick();
+            if (r != null && listener != null) {
+                listener.onLoop(seed, r);
+            }
+        }
+        return episode.result(seed);
+    }
+
+    /** Resets {@code sim} and starts the episode of {@code seed}: the object is in the air, nothing ticked yet. */
+    public CatchThrowEpisode start(Simulator sim, long seed) {
         SplittableRandom rng = new SplittableRandom(seed);
         ObjectSpec thrown = object.randomized(rng);
         NominalController controller = new NominalController(sim.model(), controllerConfig, thrown, "closed",
@@ -48,12 +60,6 @@ public final class CatchEvaluation {
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
                 controller, limits);
         episode.start(thrown, launch, seed);
-        while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
-            LoopRecord r = episode.tick();
-            if (r != null && listener != null) {
-                listener.onLoop(seed, r);
-            }
-        }
-        return episode.result(seed);
+        return episode;
     }
 }

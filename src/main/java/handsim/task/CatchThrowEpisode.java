@@ -66,6 +66,7 @@ public final class CatchThrowEpisode {
         sim.spawnObject(object, launch);
         loops.clear();
         status = Status.RUNNING;
+        touchedSinceTick = false;
         state = controller.start(observe());
         lastPhase = state.phase();
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
@@ -99,9 +100,7 @@ public final class CatchThrowEpisode {
         sim.readJoints(q, qd);
         Frame palmFrame = sim.bodyFrame(palm.body()).compose(new Frame(palm.position(), palm.orientation()));
         Vec3 palmVelocity = sim.pointVelocity(palm.body(), palm.position());
-        boolean touched = touchedSinceTick;
-        touchedSinceTick = false;
-        return new Observation(sim.time(), q.clone(), qd.clone(), palmFrame, palmVelocity, sim.objectState(), touched);
+        return new Observation(sim.time(), q.clone(), qd.clone(), palmFrame, palmVelocity, sim.objectState(), touchedSinceTick);
     }
 
     /**
@@ -125,6 +124,7 @@ public final class CatchThrowEpisode {
             }
         }
         Observation obs = observe();
+        touchedSinceTick = false;
         for (int i = 0; i < q.length; i++) {
             maxLimitExcess = Math.max(maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
         }
@@ -146,13 +146,6 @@ public final class CatchThrowEpisode {
         }
         lastPhase = state.phase();
         return finished;
-    }
-
-    /** Ticks until the episode ends or {@code maxLoops} loops after the first catch have finished. */
-    public void run(int maxLoops) {
-        while (status == Status.RUNNING && loops.size() <= maxLoops) {
-            tick();
-        }
     }
 
     private void beginLoop() {

@@ -1,0 +1,101 @@
+package handsim.control;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.TestSupport;
+import handsim.config.Home;
+import handsim.kin.Frame;
+import handsim.kin.Kinematics;
+import handsim.math.Vec3;
+import handsim.model.HandModel;
+import handsim.sim.RigidState;
+import java.util.ArrayList;
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The FSM of the nominal controller without any physics: the joints follow the targets exactly
+ * (perfect tracking), the object flies ballistically, and contact is whatever the test says.
+ */
+class NominalControllerTest {
+
+    static final Vec3 GRAVITY = new Vec3(0, -9.81, 0);
+    private final HandModel model = TestSupport.model();
+    private final ControllerConfig config = ControllerConfig.load(Home.resolve("configs/controller.json"));
+    private final double tick = config.periodSteps() * TestSupport.simConfig().timeStep();
+    private final Kinematics kin = new Kinematics(model);
+    private final NominalController controller = new NominalController(model, config, TestSupport.object("sphere"),
+            "closed", new NominalThrowPolicy(config.nominalThrows(), () -> 1.2), GRAVITY);
+    private final RigidState launch = RigidState.at(new Vec3(0.05, 1.2, 1.2), new Vec3(0, 1.0, -1.3));
+
+    @Test
+    void statesFollowEachOtherOnTheirConfiguredDurations() {
+        ControllerState s = controller.start(observe(0, model.poseVector("neutral"), false));
+        double catchDuration = s.plan().duration();
+        Map<Phase, Double> began = new EnumMap<>(Phase.class);
+        List<Phase> order = new ArrayList<>(List.of(Phase.CATCH));
+        began.put(Phase.CATCH, 0.0);
+        Phase last = Phase.CATCH;
+        for (double t = tick; order.size() < 5; t += tick) {
+            controller.update(observe(t, s.targets().clone(), false), s);
+            if (s.phase() != last) {
+                order.add(s.phase());
+                began.putIfAbsent(s.phase(), t);
+                last = s.phase();
+            }
+        }
+        assertEquals(List.of(Phase.CATCH, Phase.MIDDLE, Phase.THROW, Phase.GOBACK, Phase.CATCH), order);
+        // a state ends at the first tick at or after its duration: at most one tick late
+        assertNear(catchDuration, began.get(Phase.MIDDLE), "CATCH lasts until the planned interception");
+        assertNear(config.middleDuration(), began.get(Phase.THROW) - began.get(Phase.MIDDLE), "MIDDLE duration");
+        assertNear(config.throwDuration(), began.get(Phase.GOBACK) - began.get(Phase.THROW), "THROW duration");
+    }
+
+    @Test
+    void handOpensInCatchAndClosesOnTheFirstContact() {
+        ControllerState s = controller.start(observe(0, model.poseVector("neutral"), false));
+        assertEquals(HandPose.OPEN, s.handPose(), "CATCH opens the hand");
+        double t = tick;
+        for (int i = 0; i < 20; i++, t += tick) {
+            controller.update(observe(t, s.targets().clone(), false), s);
+        }
+        assertEquals(Phase.CATCH, s.phase());
+        assertEquals(HandPose.OPEN, s.handPose(), "no contact: the hand stays open");
+        controller.update(observe(t, s.targets().clone(), true), s);
+        assertEquals(HandPose.CLOSED, s.handPose(), "first contact closes the hand (sec. 3.1)");
+        assertTrue(s.closedOnContact());
+        // the finger targets move from open toward closed over closeTime
+        double[] w = s.poseWeights(t + config.closeTime());
+        assertEquals(1.0, w[HandPose.CLOSED.ordinal()], 1e-12, "fully closed after closeTime");
+    }
+
+    @Test
+    void contactOutsideCatchingDoesNotCloseTheHand() {
+        ControllerState s = controller.start(observe(0, model.poseVector("neutral"), false));
+        double t = tick;
+        while (s.phase() != Phase.GOBACK) {
+            controller.update(observe(t, s.targets().clone(), false), s);
+            t += tick;
+        }
+        controller.update(observe(t, s.targets().clone(), true), s);
+        assertFalse(s.closedOnContact(), "a touch while going back is not a catch");
+        assertEquals(HandPose.NEUTRAL, s.handPose());
+    }
+
+    private void assertNear(double expected, double actual, String what) {
+        assertTrue(actual >= expected - 1e-9 && actual <= expected + tick + 1e-9,
+                what + ": expected " + expected + " (+ one tick " + tick + "), got " + actual);
+    }
+
+    /** Perfect tracking: joint angles are the last targets; the object on its ballistic arc from the launch. */
+    private Observation observe(double t, double[] q, boolean touched) {
+        Frame palm = kin.siteFrame(model.site("palm_center"), q);
+        Vec3 p = launch.position().plus(launch.velocity().times(t)).plus(GRAVITY.times(0.5 * t * t));
+        Vec3 v = launch.velocity().plus(GRAVITY.times(t));
+        return new Observation(t, q, new double[q.length], palm, Vec3.ZERO, RigidState.at(p, v), touched);
+    }
+}
