@@ -6,7 +6,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
-import handsim.control.NominalThrowPolicy;
 import handsim.model.HandModel;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
@@ -14,6 +13,7 @@ import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
+import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 import java.nio.file.Path;
@@ -74,8 +74,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ObjectSpec spec = Runtime.object(object);
         EpisodeLimits limits = EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json")));
         LaunchDistribution launches = LaunchDistribution.load(Home.resolve("configs/launch.json"));
-        CatchEvaluation evaluation = new CatchEvaluation(cc, limits, launches, spec,
-                new NominalThrowPolicy(cc.nominalThrows(), () -> throwHeight));
+        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, limits, launches, spec, HeightGoals.fixed(throwHeight));
         List<EpisodeResult> results = new ArrayList<>();
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
@@ -88,7 +87,7 @@ final class EvaluateCommand implements Callable<Integer> {
                             episodeSeed, loop.index(), loop.caught() ? "caught" : "DROPPED",
                             Double.isNaN(loop.apexHeight()) ? "  -   " : String.format("%.3f m", loop.apexHeight()),
                             loop.maxPenetration() * 1e3, Math.toDegrees(loop.maxLimitExcess()), loop.peakTorqueRatio());
-                    rows.append(csvRow(episodeSeed, loop, throwHeight));
+                    rows.append(csvRow(episodeSeed, loop));
                 });
                 results.add(r);
                 System.out.printf("episode %d: first catch %s, %d loops completed, %d attempted (%s)%n", s,
@@ -135,9 +134,9 @@ final class EvaluateCommand implements Callable<Integer> {
         return 0;
     }
 
-    private static String csvRow(long seed, LoopRecord r, double target) {
+    private static String csvRow(long seed, LoopRecord r) {
         return String.format("%d,%d,%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
-                Double.isNaN(r.apexHeight()) ? "" : String.format("%.4f", r.apexHeight()), r.index() == 0 ? "" : target,
+                Double.isNaN(r.apexHeight()) ? "" : String.format("%.4f", r.apexHeight()), Double.isNaN(r.targetHeight()) ? "" : r.targetHeight(),
                 r.landing() == null ? "" : String.format("%.4f", r.landing().x()),
                 r.landing() == null ? "" : String.format("%.4f", r.landing().y()),
                 r.landing() == null ? "" : String.format("%.4f", r.landing().z()),

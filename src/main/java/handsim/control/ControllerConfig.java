@@ -39,7 +39,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         Json poses = j.get("handPoses");
         poses.allow("comment");
         Json throwing = j.get("throw");
-        throwing.allow("comment");
+        throwing.allow("comment", "nominalComment");
         ControllerConfig c = new ControllerConfig(
                 PdGains.parse(j.get("pd")),
                 IkConfig.parse(j.get("ik")),

@@ -2,6 +2,7 @@ package handsim.task;
 
 import handsim.control.ControllerConfig;
 import handsim.control.NominalController;
+import handsim.control.NominalThrowPolicy;
 import handsim.control.PdController;
 import handsim.control.ThrowPolicy;
 import handsim.sim.ObjectSpec;
@@ -27,14 +28,24 @@ public final class CatchEvaluation {
     private final LaunchDistribution launches;
     private final ObjectSpec object;
     private final ThrowPolicy throwPolicy;
+    private final HeightGoals goals;
 
+    /** {@code throwPolicy} aims at {@code goals}' current height. */
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
-            ObjectSpec object, ThrowPolicy throwPolicy) {
+            ObjectSpec object, ThrowPolicy throwPolicy, HeightGoals goals) {
+        this.goals = goals;
         this.controllerConfig = controllerConfig;
         this.limits = limits;
         this.launches = launches;
         this.object = object;
         this.throwPolicy = throwPolicy;
+    }
+
+    /** Evaluation of the nominal controller, its throws looked up for the goals' heights. */
+    public static CatchEvaluation nominal(ControllerConfig controllerConfig, EpisodeLimits limits,
+            LaunchDistribution launches, ObjectSpec object, HeightGoals goals) {
+        return new CatchEvaluation(controllerConfig, limits, launches, object,
+                new NominalThrowPolicy(controllerConfig.nominalThrows(), goals::current), goals);
     }
 
     /** Runs the episode of {@code seed} on {@code sim} (which it resets). */
@@ -58,7 +69,7 @@ public final class CatchEvaluation {
         RigidState launch = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
-                controller, limits);
+                controller, goals, limits);
         episode.start(thrown, launch, seed);
         return episode;
     }

@@ -4,6 +4,7 @@ import handsim.control.ControllerState;
 import handsim.control.NominalController;
 import handsim.control.Observation;
 import handsim.control.Phase;
+import handsim.control.ThrowParameters;
 import handsim.control.PdController;
 import handsim.kin.Frame;
 import handsim.math.Vec3;
@@ -46,10 +47,15 @@ public final class CatchThrowEpisode {
     private double maxLimitExcess;
     private boolean touchedSinceTick;
     private Vec3 landing;
-    private handsim.control.ThrowParameters loopThrow;
+    private ThrowParameters loopThrow;
+    private double loopGoal = Double.NaN;
+    private final HeightGoals goals;
 
-    public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, EpisodeLimits limits) {
+    /** {@code goals} are the desired apex heights the controller's throw policy reads. */
+    public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, HeightGoals goals,
+            EpisodeLimits limits) {
         this.sim = sim;
+        this.goals = goals;
         this.loop = new ServoLoop(sim, pd);
         this.controller = controller;
         this.limits = limits;
@@ -63,6 +69,7 @@ public final class CatchThrowEpisode {
     /** Resets the world (arm at rest in the neutral pose) and launches {@code object}. */
     public void start(ObjectSpec object, RigidState launch, long seed) {
         sim.reset(model.poseVector("neutral"), seed);
+        goals.reset(seed);
         sim.spawnObject(object, launch);
         loops.clear();
         status = Status.RUNNING;
@@ -155,13 +162,17 @@ public final class CatchThrowEpisode {
         maxLimitExcess = 0;
         landing = null;
         loopThrow = loops.isEmpty() ? null : state.currentThrow();
+        loopGoal = loops.isEmpty() ? Double.NaN : goals.current();
+        if (!loops.isEmpty()) {
+            goals.advance(); // the throw of this loop is made: the next one aims at a new goal
+        }
         loop.resetPeakTorqueRatio();
     }
 
     private LoopRecord finishLoop(boolean caught) {
         int index = loops.size();
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
-                loopThrow, maxDepth, maxLimitExcess, loop.peakTorqueRatio(),
+                loopGoal, loopThrow, maxDepth, maxLimitExcess, loop.peakTorqueRatio(),
                 sim.time() - loopStart);
         loops.add(r);
         return r;

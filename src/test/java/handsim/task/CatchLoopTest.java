@@ -7,7 +7,6 @@ import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
-import handsim.control.NominalThrowPolicy;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
@@ -80,9 +79,9 @@ class CatchLoopTest {
 
     static CatchEvaluation evaluation() {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+        return CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"),
-                new NominalThrowPolicy(cc.nominalThrows(), () -> 1.2));
+                HeightGoals.fixed(1.2));
     }
 
     private static String row(CatchThrowEpisode e) {

@@ -1,0 +1,158 @@
+package handsim.app;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.report.Plot;
+import handsim.sim.Simulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.EpisodeLimits;
+import handsim.task.HeightGoals;
+import handsim.task.LaunchDistribution;
+import handsim.task.LoopRecord;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim demo}, the main job: endless catch-and-throw of a sphere to varying heights.
+ * With a display it opens the viewer; without one it runs a fixed number of throws headless,
+ * prints each, and writes a run folder with a summary and a plot of apex against goal.
+ */
+@Command(name = "demo", mixinStandardHelpOptions = true,
+        description = "The main job: the hand catches and throws a sphere to a new random height every loop. "
+                + "Opens the viewer when there is a display; otherwise runs --loops throws headless and writes "
+                + "summary.json, loops.csv and apex.png to a run folder.")
+final class DemoCommand implements Callable<Integer> {
+
+    @Option(names = "--loops", defaultValue = "20", description = "throws to make when headless (default: ${DEFAULT-VALUE})")
+    int loops;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (default: ${DEFAULT-VALUE})")
+    String object;
+
+    @Option(names = "--heights", paramLabel = "LOW:HIGH", defaultValue = "1.1:1.3",
+            description = "range of the random apex goals, m (default: ${DEFAULT-VALUE}, where the nominal throws loop reliably)")
+    String heights;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "run folder (default: runs/demo__<object>__<seed>__<time>)")
+    Path out;
+
+    @Option(names = "--headless", description = "run headless even when a display is available")
+    boolean headless;
+
+    @Override
+    public Integer call() throws Exception {
+        if (loops < 1 || loops > 100000) {
+            throw new IllegalArgumentException("--loops must be in [1, 100000], got " + loops);
+        }
+        HeightGoals goals = parseHeights(heights);
+        if (!headless && System.getenv("DISPLAY") != null) {
+            System.out.println("handsim demo: the interactive viewer is not built yet; running headless");
+        } else if (!headless) {
+            System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
+        }
+        ControllerConfig cc = Runtime.controllerConfig();
+        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), Runtime.object(object), goals);
+        Path dir = out != null ? out : Home.resolve("runs/demo__" + object + "__" + seed + "__"
+                + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+
+        List<LoopRecord> throwsMade = new ArrayList<>();
+        List<Long> throwSeeds = new ArrayList<>();
+        int episodes = 0, firstCatchMisses = 0;
+        long t0 = System.nanoTime();
+        try (Simulator sim = Runtime.simulator(Runtime.model(null), Runtime.simConfig())) {
+            for (long s = seed; throwsMade.size() < loops; s++) {
+                episodes++;
+                CatchThrowEpisode episode = evaluation.start(sim, s);
+                while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
+                    LoopRecord r = episode.tick();
+                    if (r == null) {
+                        continue;
+                    }
+                    if (r.index() == 0) {
+                        firstCatchMisses += r.caught() ? 0 : 1;
+                        System.out.printf("episode %d: object thrown in, %s%n", s, r.caught() ? "caught" : "missed");
+                        continue;
+                    }
+                    throwsMade.add(r);
+                    throwSeeds.add(s);
+                    System.out.printf("throw %3d/%d: goal %.3f m  apex %.3f m  error %+.3f m  %s%n", throwsMade.size(), loops,
+                            r.targetHeight(), r.apexHeight(), r.apexHeight() - r.targetHeight(), r.caught() ? "caught" : "DROPPED");
+                }
+            }
+        }
+        double wall = (System.nanoTime() - t0) / 1e9;
+        writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
+        return 0;
+    }
+
+    private void writeRun(Path dir, List<LoopRecord> loopsMade, List<Long> seeds, int episodes, int firstCatchMisses,
+            HeightGoals goals, double wall) throws java.io.IOException {
+        int n = loopsMade.size();
+        double[] index = new double[n], goal = new double[n], apex = new double[n];
+        StringBuilder csv = new StringBuilder("throw,episode_seed,goal_m,apex_m,error_m,caught\n");
+        int caught = 0;
+        double absError = 0, maxAbsError = 0;
+        for (int i = 0; i < n; i++) {
+            LoopRecord r = loopsMade.get(i);
+            index[i] = i + 1;
+            goal[i] = r.targetHeight();
+            apex[i] = r.apexHeight();
+            double err = r.apexHeight() - r.targetHeight();
+            absError += Math.abs(err);
+            maxAbsError = Math.max(maxAbsError, Math.abs(err));
+            caught += r.caught() ? 1 : 0;
+            csv.append(String.format(Locale.ROOT, "%d,%d,%.4f,%.4f,%.4f,%s%n", i + 1, seeds.get(i), goal[i], apex[i], err, r.caught()));
+        }
+        ObjectNode summary = JsonNodeFactory.instance.objectNode();
+        summary.put("command", "demo");
+        summary.put("controller", "nominal");
+        summary.put("object", object);
+        summary.put("seed", seed);
+        summary.put("heights_low_m", goals.low());
+        summary.put("heights_high_m", goals.high());
+        summary.put("throws", n);
+        summary.put("catches", caught);
+        summary.put("drops", n - caught);
+        summary.put("episodes", episodes);
+        summary.put("first_catch_misses", firstCatchMisses);
+        summary.put("height_error_abs_mean_m", n > 0 ? absError / n : Double.NaN);
+        summary.put("height_error_abs_max_m", maxAbsError);
+        summary.put("wall_s", wall);
+        Outputs.writeJson(dir.resolve("summary.json"), summary);
+        Outputs.writeString(dir.resolve("loops.csv"), csv.toString());
+        new Plot("Apex height per throw (" + object + ", nominal controller)", "throw", "height (m)")
+                .add("goal", index, goal, Plot.RED, Plot.Style.POINTS)
+                .add("apex reached", index, apex, Plot.BLUE, Plot.Style.LINE_POINTS)
+                .writePng(dir.resolve("apex.png"));
+        System.out.printf(Locale.ROOT, "%d throws: %d caught, %d dropped (%d episodes); mean |apex - goal| %.3f m; %.0f s%n",
+                n, caught, n - caught, episodes, n > 0 ? absError / n : Double.NaN, wall);
+        System.out.println("wrote " + dir.resolve("summary.json") + ", loops.csv, apex.png");
+    }
+
+    private static HeightGoals parseHeights(String text) {
+        String[] parts = text.split(":");
+        try {
+            if (parts.length == 2) {
+                return new HeightGoals(Double.parseDouble(parts[0]), Double.parseDouble(parts[1]));
+            }
+        } catch (NumberFormatException e) {
+            // fall through to the message below
+        }
+        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with 0 < LOW <= HIGH, got \"" + text + "\"");
+    }
+}

@@ -1,0 +1,213 @@
+package handsim.report;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Line2D;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.List;
+import javax.imageio.ImageIO;
+
+/**
+ * A small x-y chart written as PNG with Java2D (no display needed): line, point and bar series,
+ * axis ticks, labels and a legend. Enough for apex-per-loop, learning curves and histograms.
+ */
+public final class Plot {
+
+    /** How a series is drawn. */
+    public enum Style { LINE, POINTS, LINE_POINTS, BARS }
+
+    private record Series(String label, double[] x, double[] y, Color color, Style style) {
+    }
+
+    public static final Color BLUE = new Color(31, 119, 180);
+    public static final Color ORANGE = new Color(255, 127, 14);
+    public static final Color GREEN = new Color(44, 160, 44);
+    public static final Color RED = new Color(214, 39, 40);
+    public static final Color GREY = new Color(127, 127, 127);
+
+    private static final int WIDTH = 900;
+    private static final int HEIGHT = 540;
+    private static final int LEFT = 80, RIGHT = 30, TOP = 50, BOTTOM = 60;
+
+    private final String title;
+    private final String xLabel;
+    private final String yLabel;
+    private final List<Series> series = new ArrayList<>();
+    private double[] yRange;
+
+    public Plot(String title, String xLabel, String yLabel) {
+        this.title = title;
+        this.xLabel = xLabel;
+        this.yLabel = yLabel;
+    }
+
+    public Plot add(String label, double[] x, double[] y, Color color, Style style) {
+        if (x.length != y.length) {
+            throw new IllegalArgumentException("series \"" + label + "\": " + x.length + " x values but " + y.length + " y values");
+        }
+        series.add(new Series(label, x.clone(), y.clone(), color, style));
+        return this;
+    }
+
+    /** Fixes the y axis range instead of fitting it to the data. */
+    public Plot yRange(double low, double high) {
+        yRange = new double[] {low, high};
+        return this;
+    }
+
+    /** Writes the chart as a PNG (atomically: a temporary file moved into place). */
+    public void writePng(Path file) throws IOException {
+        BufferedImage img = render();
+        Path dir = file.toAbsolutePath().getParent();
+        Files.createDirectories(dir);
+        Path tmp = Files.createTempFile(dir, ".plot", ".png");
+        ImageIO.write(img, "png", tmp.toFile());
+        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    BufferedImage render() {
+        double[] xr = range(true), yr = yRange != null ? yRange : range(false);
+        BufferedImage img = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, WIDTH, HEIGHT);
+        int pw = WIDTH - LEFT - RIGHT, ph = HEIGHT - TOP - BOTTOM;
+        Axis xa = new Axis(xr[0], xr[1], LEFT, LEFT + pw), ya = new Axis(yr[0], yr[1], TOP + ph, TOP);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        FontMetrics fm = g.getFontMetrics();
+        // grid and ticks
+        for (double t : ticks(xr)) {
+            int px = (int) xa.map(t);
+            g.setColor(new Color(235, 235, 235));
+            g.drawLine(px, TOP, px, TOP + ph);
+            g.setColor(Color.DARK_GRAY);
+            String s = format(t);
+            g.drawString(s, px - fm.stringWidth(s) / 2, TOP + ph + 18);
+        }
+        for (double t : ticks(yr)) {
+            int py = (int) ya.map(t);
+            g.setColor(new Color(235, 235, 235));
+            g.drawLine(LEFT, py, LEFT + pw, py);
+            g.setColor(Color.DARK_GRAY);
+            String s = format(t);
+            g.drawString(s, LEFT - 8 - fm.stringWidth(s), py + 5);
+        }
+        g.setColor(Color.BLACK);
+        g.drawRect(LEFT, TOP, pw, ph);
+        // series
+        g.setClip(LEFT, TOP, pw + 1, ph + 1);
+        double barWidth = barWidth(xa);
+        for (Series s : series) {
+            g.setColor(s.color);
+            g.setStroke(new BasicStroke(2f));
+            for (int i = 0; i < s.x.length; i++) {
+                if (!Double.isFinite(s.y[i])) {
+                    continue;
+                }
+                double px = xa.map(s.x[i]), py = ya.map(s.y[i]);
+                if (s.style == Style.BARS) {
+                    double base = ya.map(Math.max(yr[0], 0));
+                    g.fill(new Rectangle2D.Double(px - barWidth / 2, Math.min(py, base), barWidth, Math.abs(base - py)));
+                    continue;
+                }
+                if (s.style != Style.POINTS && i > 0 && Double.isFinite(s.y[i - 1])) {
+                    g.draw(new Line2D.Double(xa.map(s.x[i - 1]), ya.map(s.y[i - 1]), px, py));
+                }
+                if (s.style != Style.LINE) {
+                    g.fill(new java.awt.geom.Ellipse2D.Double(px - 3.5, py - 3.5, 7, 7));
+                }
+            }
+        }
+        g.setClip(null);
+        // labels and legend
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
+        g.drawString(title, LEFT, TOP - 18);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
+        fm = g.getFontMetrics();
+        g.drawString(xLabel, LEFT + pw / 2 - fm.stringWidth(xLabel) / 2, HEIGHT - 15);
+        var rot = g.getTransform();
+        g.rotate(-Math.PI / 2);
+        g.drawString(yLabel, -(TOP + ph / 2) - fm.stringWidth(yLabel) / 2, 20);
+        g.setTransform(rot);
+        int ly = TOP + 20;
+        for (Series s : series) {
+            g.setColor(s.color);
+            g.fillRect(LEFT + pw - 190, ly - 9, 18, 8);
+            g.setColor(Color.BLACK);
+            g.drawString(s.label, LEFT + pw - 165, ly);
+            ly += 20;
+        }
+        g.dispose();
+        return img;
+    }
+
+    private double barWidth(Axis xa) {
+        double step = Double.POSITIVE_INFINITY;
+        for (Series s : series) {
+            if (s.style == Style.BARS) {
+                for (int i = 1; i < s.x.length; i++) {
+                    step = Math.min(step, Math.abs(s.x[i] - s.x[i - 1]));
+                }
+            }
+        }
+        return Double.isFinite(step) ? 0.85 * Math.abs(xa.map(step) - xa.map(0)) : 8;
+    }
+
+    private double[] range(boolean x) {
+        double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
+        for (Series s : series) {
+            for (double v : x ? s.x : s.y) {
+                if (Double.isFinite(v)) {
+                    lo = Math.min(lo, v);
+                    hi = Math.max(hi, v);
+                }
+            }
+            if (!x && s.style == Style.BARS) {
+                lo = Math.min(lo, 0);
+            }
+        }
+        if (!Double.isFinite(lo)) {
+            return new double[] {0, 1};
+        }
+        double pad = hi > lo ? 0.05 * (hi - lo) : Math.max(1e-3, 0.1 * Math.abs(hi));
+        return new double[] {lo - pad, hi + pad};
+    }
+
+    /** About six round tick values across the range. */
+    static List<Double> ticks(double[] r) {
+        double raw = (r[1] - r[0]) / 6, mag = Math.pow(10, Math.floor(Math.log10(raw)));
+        double step = raw / mag < 1.5 ? mag : raw / mag < 3.5 ? 2 * mag : raw / mag < 7.5 ? 5 * mag : 10 * mag;
+        List<Double> out = new ArrayList<>();
+        for (double t = Math.ceil(r[0] / step) * step; t <= r[1] + 1e-12; t += step) {
+            out.add(Math.abs(t) < step * 1e-9 ? 0 : t);
+        }
+        return out;
+    }
+
+    private static String format(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e6) {
+            return Long.toString((long) v);
+        }
+        return String.format(java.util.Locale.ROOT, Math.abs(v) >= 10 ? "%.1f" : Math.abs(v) >= 1 ? "%.2f" : "%.3f", v)
+                .replaceAll("0+$", "").replaceAll("\\.$", "");
+    }
+
+    private record Axis(double lo, double hi, double p0, double p1) {
+        double map(double v) {
+            return p0 + (v - lo) / (hi - lo) * (p1 - p0);
+        }
+    }
+}
