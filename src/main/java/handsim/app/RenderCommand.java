@@ -1,0 +1,101 @@
+package handsim.app;
+
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.model.HandModel;
+import handsim.sim.SimConfig;
+import handsim.sim.Simulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.CatchLoopScene;
+import handsim.task.EpisodeLimits;
+import handsim.task.HeldBallScenario;
+import handsim.task.HeldBallScene;
+import handsim.task.HeightGoals;
+import handsim.task.LaunchDistribution;
+import handsim.task.Scene;
+import handsim.task.ServoLoop;
+import handsim.viewer.Camera;
+import handsim.viewer.OffscreenRenderer;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim render}: a headless run written as numbered PNG frames ({@code 00000.png}, ...),
+ * from a fixed camera. Without {@code --controller} the foundation's held-ball scene; with it,
+ * the controller's catch-and-throw loop.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true,
+        description = "Write a headless run as PNG frames DIR/00000.png, 00001.png, ... (make a video with "
+                + "ffmpeg -framerate F -i DIR/%05d.png out.mp4). Needs an X display; the launcher uses xvfb-run without one.")
+final class RenderCommand implements Callable<Integer> {
+
+    @Option(names = "--out", paramLabel = "DIR", required = true, description = "folder for the frames")
+    Path out;
+
+    @Option(names = "--seconds", paramLabel = "S", defaultValue = "2", description = "simulated seconds (default: ${DEFAULT-VALUE})")
+    double seconds;
+
+    @Option(names = "--fps", paramLabel = "F", defaultValue = "30", description = "frames per simulated second (default: ${DEFAULT-VALUE})")
+    int fps;
+
+    @Option(names = "--width", defaultValue = "960", description = "image width in pixels (default: ${DEFAULT-VALUE})")
+    int width;
+
+    @Option(names = "--height", defaultValue = "720", description = "image height in pixels (default: ${DEFAULT-VALUE})")
+    int height;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--controller", description = "nominal: render the catch-and-throw loop instead of the held ball")
+    String controller;
+
+    @Option(names = "--object", defaultValue = "sphere", description = "with --controller: sphere, can, cuboid or club")
+    String object;
+
+    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "with --controller: apex goal, m")
+    double throwHeight;
+
+    @Override
+    public Integer call() throws Exception {
+        if (!(seconds > 0 && seconds <= 600)) {
+            throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
+        }
+        if (fps < 1 || fps > 240) {
+            throw new IllegalArgumentException("--fps must be in [1, 240], got " + fps);
+        }
+        if (controller != null && !controller.equals("nominal")) {
+            throw new IllegalArgumentException("--controller must be nominal, got " + controller);
+        }
+        int frames = (int) Math.round(seconds * fps);
+        try (Scene scene = scene(); OffscreenRenderer renderer = new OffscreenRenderer(width, height)) {
+            Camera camera = new Camera();
+            long t0 = System.nanoTime();
+            for (int f = 0; f < frames; f++) {
+                OffscreenRenderer.writePng(renderer.render(scene.snapshot(), camera, null), out.resolve(String.format("%05d.png", f)));
+                if (f % Math.max(1, fps / 2) == 0 || f == frames - 1) {
+                    System.out.printf("frame %d/%d  t=%.2f s  %s%n", f + 1, frames, scene.time(), scene.status());
+                }
+                scene.advance(1.0 / fps);
+            }
+            System.out.printf("wrote %d frames to %s (%.0f ms per frame)%n", frames, out, (System.nanoTime() - t0) / 1e6 / frames);
+        }
+        return 0;
+    }
+
+    private Scene scene() {
+        HandModel model = Runtime.model(null);
+        SimConfig config = Runtime.simConfig();
+        Simulator sim = Runtime.simulator(model, config);
+        if (controller == null) {
+            return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
+        }
+        ControllerConfig cc = Runtime.controllerConfig();
+        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), Runtime.object(object), HeightGoals.fixed(throwHeight));
+        return new CatchLoopScene(sim, evaluation, seed);
+    }
+}
