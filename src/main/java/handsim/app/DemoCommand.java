@@ -3,15 +3,11 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
-import handsim.config.Json;
-import handsim.control.ControllerConfig;
 import handsim.report.Plot;
 import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
-import handsim.task.EpisodeLimits;
 import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -64,9 +60,7 @@ final class DemoCommand implements Callable<Integer> {
         } else if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        ControllerConfig cc = Runtime.controllerConfig();
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), Runtime.object(object), goals);
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, goals);
         Path dir = out != null ? out : Home.resolve("runs/demo__" + object + "__" + seed + "__"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
 

@@ -3,18 +3,12 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.config.Home;
-import handsim.config.Json;
-import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
-import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
-import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -70,11 +64,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
-        ControllerConfig cc = Runtime.controllerConfig();
-        ObjectSpec spec = Runtime.object(object);
-        EpisodeLimits limits = EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json")));
-        LaunchDistribution launches = LaunchDistribution.load(Home.resolve("configs/launch.json"));
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, limits, launches, spec, HeightGoals.fixed(throwHeight));
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
         List<EpisodeResult> results = new ArrayList<>();
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");

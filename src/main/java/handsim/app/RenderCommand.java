@@ -1,18 +1,13 @@
 package handsim.app;
 
-import handsim.config.Home;
-import handsim.config.Json;
-import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchLoopScene;
-import handsim.task.EpisodeLimits;
 import handsim.task.HeldBallScenario;
 import handsim.task.HeldBallScene;
 import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
 import handsim.task.Scene;
 import handsim.task.ServoLoop;
 import handsim.viewer.Camera;
@@ -93,9 +88,7 @@ final class RenderCommand implements Callable<Integer> {
         if (controller == null) {
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
-        ControllerConfig cc = Runtime.controllerConfig();
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), Runtime.object(object), HeightGoals.fixed(throwHeight));
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
         return new CatchLoopScene(sim, evaluation, seed);
     }
 }

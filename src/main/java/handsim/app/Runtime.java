@@ -10,6 +10,10 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.EpisodeLimits;
+import handsim.task.HeightGoals;
+import handsim.task.LaunchDistribution;
 import java.nio.file.Path;
 
 /** Loads the shipped model and configs and builds the engine: the wiring every command shares. */
@@ -41,6 +45,13 @@ final class Runtime {
             throw new IllegalArgumentException("unknown object \"" + name + "\" (no " + Home.root().relativize(file) + ")");
         }
         return ObjectSpec.load(file);
+    }
+
+    /** Seeded catch-and-throw episodes of the nominal controller with the shipped launch and episode configs. */
+    static CatchEvaluation nominalEvaluation(String object, HeightGoals goals) {
+        return CatchEvaluation.nominal(controllerConfig(),
+                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), object(object), goals);
     }
 
     static Simulator simulator(HandModel model, SimConfig config) {
