@@ -11,9 +11,33 @@ import java.util.Optional;
  * Catch planning (sec. 3.6): predict the object's ballistic path, intercept it where its centre
  * crosses the horizontal interception plane while descending, and meet it there with the palm
  * moving at a fraction (70 %) of its velocity. The back of the hand faces along the object's
- * velocity; for a can or club the hand's z axis lies along the object's long axis.
+ * velocity; for a can or club the hand's z axis lies along the object's long axis. The paper
+ * asks for both; where they conflict the long axis wins: the back of the hand faces the part
+ * of the velocity across the axis, so the object lands flat on the palm instead of on one end.
+ *
+ * <p>The arm cannot turn the palm to every heading about its normal (wrist and shoulder limits),
+ * so the planner asks a {@link Reach} whether the arm can place the palm there and, if not,
+ * turns the hand about the palm normal in steps, nearest headings first, until it can: the
+ * object then lies across the palm at a slant, as a can does in a power grasp.
  */
 public final class CatchPlanner {
+
+    /** How closely the arm can place the palm at a frame: the inverse kinematics residual. */
+    @FunctionalInterface
+    public interface Reach {
+        DlsIk.Residual residual(Frame palm);
+    }
+
+    /**
+     * The search over headings about the palm normal.
+     *
+     * @param angleStep step between tried headings (rad)
+     * @param maxAngle largest turn away from the preferred heading (rad)
+     * @param positionTolerance a palm frame counts as reachable within this IK position residual (m)
+     * @param rotationTolerance ... and this rotation residual (rad)
+     */
+    public record HeadingSearch(double angleStep, double maxAngle, double positionTolerance, double rotationTolerance) {
+    }
 
     /**
      * @param duration time from now to the interception (the CATCH state's length), s
@@ -24,23 +48,30 @@ public final class CatchPlanner {
     public record Plan(double duration, Frame palmTarget, Vec3 palmVelocity, Vec3 objectPosition, Vec3 objectVelocity) {
     }
 
+    /** Below this sine of the angle between velocity and long axis the object flies end-first. */
+    private static final double MIN_ACROSS = 0.3;
+
     private final Ballistics ballistics;
     private final double planeHeight;
     private final double velocityFraction;
     private final double minDuration;
+    private final HeadingSearch search;
 
-    public CatchPlanner(Ballistics ballistics, double planeHeight, double velocityFraction, double minDuration) {
+    public CatchPlanner(Ballistics ballistics, double planeHeight, double velocityFraction, double minDuration,
+            HeadingSearch search) {
         this.ballistics = ballistics;
         this.planeHeight = planeHeight;
         this.velocityFraction = velocityFraction;
         this.minDuration = minDuration;
+        this.search = search;
     }
 
     /**
-     * Plans the interception of {@code object} (shape {@code spec}); {@code readyRotation} is the
-     * palm rotation the hand prefers about its dorsal normal (the neutral one).
+     * Plans the interception of {@code object} (shape {@code spec}), met where {@code grasp}
+     * places it on the hand; {@code readyRotation} is the palm rotation the hand prefers about
+     * its dorsal normal (the neutral one); {@code reach} says where the arm can put the palm.
      */
-    public Plan plan(RigidState object, ObjectSpec spec, Quat readyRotation) {
+    public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach) {
         double t = ballistics.descendingCrossing(object.position(), object.velocity(), planeHeight);
         if (Double.isNaN(t) || t < minDuration) {
             // too soon (or below the plane already): meet it later, lower down
@@ -48,11 +79,58 @@ public final class CatchPlanner {
         }
         Vec3 p = ballistics.position(object.position(), object.velocity(), t);
         Vec3 v = ballistics.velocity(object.velocity(), t);
-        Vec3 back = v.norm() > 1e-6 ? v.normalized() : Vec3.Y.negate();
-        Quat rotation = handRotation(back, longAxisAt(object, spec, t), readyRotation);
-        // the object's centre rests one half-thickness off the palm, on the palm side (-y of the hand)
-        Vec3 palm = p.plus(back.times(spec.halfThickness()));
-        return new Plan(t, new Frame(palm, rotation), v.times(velocityFraction), p, v);
+        Optional<Vec3> axis = longAxisAt(object, spec, t);
+        Vec3 back = backOfHand(v, axis);
+        Quat preferred = handRotation(back, axis, readyRotation);
+        Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()), axis.isPresent(), reach);
+        return new Plan(t, palm, v.times(velocityFraction), p, v);
+    }
+
+    /**
+     * The palm frame that puts the object's centre {@code p} at {@code objectInPalm}, turned
+     * about the palm normal as little as possible from {@code preferred} while reachable; the
+     * best-reached one if none is. A long object lies along the hand either way round, so for
+     * it a half turn counts as no turn.
+     */
+    private Frame reachableHeading(Quat preferred, Vec3 p, Vec3 objectInPalm, boolean symmetric, Reach reach) {
+        Frame best = null;
+        double bestMiss = Double.POSITIVE_INFINITY;
+        int steps = (int) Math.floor(search.maxAngle() / search.angleStep() + 1e-9);
+        for (int k = 0; k <= 2 * steps; k++) {
+            // 0, +step, -step, +2 step, ... ; each heading also tried half a turn round for long objects
+            double turn = (k % 2 == 1 ? 1 : -1) * ((k + 1) / 2) * search.angleStep();
+            for (double flip : symmetric ? new double[] {0, Math.PI} : new double[] {0}) {
+                Quat r = preferred.mul(Quat.fromAxisAngle(Vec3.Y, turn + flip));
+                Frame palm = new Frame(p.minus(r.rotate(objectInPalm)), r);
+                DlsIk.Residual res = reach.residual(palm);
+                if (res.position() <= search.positionTolerance() && res.rotation() <= search.rotationTolerance()) {
+                    return palm;
+                }
+                // unreachable everywhere: keep the frame the arm gets closest to (1 rad weighs as 0.1 m)
+                double miss = res.position() + 0.1 * res.rotation();
+                if (miss < bestMiss) {
+                    bestMiss = miss;
+                    best = palm;
+                }
+            }
+        }
+        return best;
+    }
+
+    /**
+     * The direction the back of the hand faces: along the incoming velocity, or, for an object
+     * with a long axis, along the velocity's part across that axis (unless the object flies
+     * nearly end-first, where the velocity itself is kept).
+     */
+    static Vec3 backOfHand(Vec3 velocity, Optional<Vec3> longAxis) {
+        Vec3 back = velocity.norm() > 1e-6 ? velocity.normalized() : Vec3.Y.negate();
+        if (longAxis.isPresent()) {
+            Vec3 across = perpendicularPart(back, longAxis.get());
+            if (across.norm() > MIN_ACROSS) {
+                return across.normalized();
+            }
+        }
+        return back;
     }
 
     /** The object's long axis (world) after {@code t} seconds of free rotation at constant angular velocity. */

@@ -20,11 +20,16 @@ import java.nio.file.Path;
  * @param restPlaneHeight height of the rest plane GOBACK returns to (0.6 m)
  * @param throwEndSpeedFactor palm speed at the end of THROW = factor * |dOffset| / throwDuration
  * @param openTime, closeTime, neutralTime hand pose transition times (s)
+ * @param grasps per-object hand poses and catch placement
+ * @param headingSearch how the catch planner turns the palm about its normal until the arm can
+ *     reach it
+ * @param reachIkIterations IK iterations spent judging whether one palm frame is reachable
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
         double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
-        double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows) {
+        double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
+        Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -35,7 +40,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         Json fsm = j.get("fsm");
         fsm.allow("comment");
         Json catching = j.get("catch");
-        catching.allow("comment");
+        catching.allow("comment", "headingComment");
         Json poses = j.get("handPoses");
         poses.allow("comment");
         Json throwing = j.get("throw");
@@ -56,7 +61,13 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                 poses.positive("closeTime"),
                 poses.positive("neutralTime"),
                 ThrowSpace.parse(throwing.get("space")),
-                NominalThrows.parse(throwing.get("nominal")));
+                NominalThrows.parse(throwing.get("nominal")),
+                Grasp.Table.parse(j.get("grasps")),
+                new CatchPlanner.HeadingSearch(Math.toRadians(catching.number("headingStepDeg", 1, 90)),
+                        Math.toRadians(catching.number("headingMaxDeg", 0, 180)),
+                        catching.positive("reachPositionTolerance"),
+                        Math.toRadians(catching.positive("reachRotationToleranceDeg"))),
+                catching.integer("reachIkIterations", 1, 10000));
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }

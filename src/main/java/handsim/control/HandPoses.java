@@ -22,10 +22,9 @@ public final class HandPoses {
 
     /**
      * @param armDofs the DOFs the IK drives (everything else is "hand")
-     * @param closedPose name of the model pose used as "closed" (object specific, e.g. tighter
-     *     for a can)
+     * @param grasp names the model poses used as "open" and "closed" for the object in hand
      */
-    public HandPoses(Kinematics kin, int[] armDofs, String closedPose) {
+    public HandPoses(Kinematics kin, int[] armDofs, Grasp grasp) {
         this.kin = kin;
         HandModel m = kin.model();
         for (Joint j : m.joints()) {
@@ -39,9 +38,9 @@ public final class HandPoses {
         }
         neutral = m.poseVector("neutral");
         open = m.poseVector("neutral");
-        m.pose("open").applyTo(open);
+        m.pose(grasp.openPose()).applyTo(open);
         closed = m.poseVector("neutral");
-        m.pose(closedPose).applyTo(closed);
+        m.pose(grasp.closedPose()).applyTo(closed);
     }
 
     /** The full DOF vector of a named hand pose (only the hand entries are meaningful). */

@@ -26,17 +26,18 @@ public final class NominalController {
     private final Kinematics kin;
     private final Site palm;
     private final DlsIk ik;
+    private final Grasp grasp;
     private final HandPoses poses;
     private final CatchPlanner planner;
     private final double[] neutralPose;
     private final Frame neutralPalm;
 
     /**
-     * @param closedPose the model pose used as "closed" for this object
+     * @param object the object to catch; its name selects the grasp in {@code config}
      * @param gravity world gravity, for predicting the object's flight
      */
-    public NominalController(HandModel model, ControllerConfig config, ObjectSpec object, String closedPose,
-            ThrowPolicy throwPolicy, Vec3 gravity) {
+    public NominalController(HandModel model, ControllerConfig config, ObjectSpec object, ThrowPolicy throwPolicy,
+            Vec3 gravity) {
         this.model = model;
         this.config = config;
         this.object = object;
@@ -44,9 +45,14 @@ public final class NominalController {
         this.kin = new Kinematics(model);
         this.palm = model.site("palm_center");
         this.ik = new DlsIk(kin, palm, config.ik());
-        this.poses = new HandPoses(kin, ik.dofs(), closedPose);
+        this.grasp = config.grasps().forObject(object.name());
+        try {
+            this.poses = new HandPoses(kin, ik.dofs(), grasp);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("grasp of " + object.name() + " in the controller config: " + e.getMessage(), e);
+        }
         this.planner = new CatchPlanner(new Ballistics(gravity), config.interceptionHeight(),
-                config.catchVelocityFraction(), config.catchMinDuration());
+                config.catchVelocityFraction(), config.catchMinDuration(), config.headingSearch());
         this.neutralPose = model.poseVector("neutral");
         this.neutralPalm = kin.siteFrame(palm, neutralPose);
     }
@@ -108,14 +114,15 @@ public final class NominalController {
 
     /** Plans the curve of a new state from the hand's current position and velocity (sec. 3.6). */
     private void enter(Phase phase, Observation obs, ControllerState s) {
-        s.phase = phase;
-        s.phaseStart = obs.time();
         Vec3 p0 = obs.palm().origin();
         Vec3 v0 = obs.palmVelocity();
         Quat r0 = obs.palm().rotation();
+        s.phase = phase;
+        s.phaseStart = obs.time();
         switch (phase) {
             case CATCH -> {
-                CatchPlanner.Plan plan = planner.plan(obs.object(), object, neutralPalm.rotation());
+                CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
+                        palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()));
                 s.plan = plan;
                 s.trajectory = new PalmTrajectory(new Hermite(p0, v0, plan.palmTarget().origin(), plan.palmVelocity(),
                         plan.duration()), r0, plan.palmTarget().rotation());

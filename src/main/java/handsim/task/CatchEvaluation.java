@@ -64,7 +64,7 @@ public final class CatchEvaluation {
     public CatchThrowEpisode start(Simulator sim, long seed) {
         SplittableRandom rng = new SplittableRandom(seed);
         ObjectSpec thrown = object.randomized(rng);
-        NominalController controller = new NominalController(sim.model(), controllerConfig, thrown, "closed",
+        NominalController controller = new NominalController(sim.model(), controllerConfig, thrown,
                 throwPolicy, sim.config().gravity());
         RigidState launch = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());

@@ -45,7 +45,7 @@ public final class CatchThrowEpisode {
     private double apex;
     private double maxDepth;
     private double maxLimitExcess;
-    private boolean touchedSinceTick;
+    private long touchedSinceTick;
     private Vec3 landing;
     private ThrowParameters loopThrow;
     private double loopGoal = Double.NaN;
@@ -73,7 +73,7 @@ public final class CatchThrowEpisode {
         sim.spawnObject(object, launch);
         loops.clear();
         status = Status.RUNNING;
-        touchedSinceTick = false;
+        touchedSinceTick = 0;
         state = controller.start(observe());
         lastPhase = state.phase();
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
@@ -120,7 +120,7 @@ public final class CatchThrowEpisode {
         }
         for (int i = 0; i < periodSteps; i++) {
             loop.step();
-            touchedSinceTick |= sim.handContacts().any();
+            touchedSinceTick |= sim.handContacts().bodyMask();
             maxDepth = Math.max(maxDepth, sim.handContacts().maxDepth());
             RigidState o = sim.objectState();
             apex = Math.max(apex, o.position().y());
@@ -131,7 +131,7 @@ public final class CatchThrowEpisode {
             }
         }
         Observation obs = observe();
-        touchedSinceTick = false;
+        touchedSinceTick = 0;
         for (int i = 0; i < q.length; i++) {
             maxLimitExcess = Math.max(maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
         }

@@ -19,8 +19,12 @@ class CatchPlannerTest {
     /** Closed-form ballistics: only rounding separates planner and construction. */
     static final double TOLERANCE = 1e-9;
 
-    private final CatchPlanner planner = new CatchPlanner(new Ballistics(GRAVITY), PLANE, 0.7, 0.12);
+    private final CatchPlanner planner = new CatchPlanner(new Ballistics(GRAVITY), PLANE, 0.7, 0.12,
+            new CatchPlanner.HeadingSearch(Math.toRadians(15), Math.toRadians(90), 0.005, Math.toRadians(2)));
+    /** An arm that reaches everywhere: the planner keeps its preferred heading. */
+    private static final CatchPlanner.Reach ANYWHERE = palm -> new DlsIk.Residual(0, 0);
     private final Quat ready = Quat.fromAxisAngle(Vec3.X, -Math.PI / 2);
+    private final Grasp centred = new Grasp("open", "closed", Vec3.ZERO);
 
     /**
      * Launch a point from p0 so that it is at P (on the plane) after T seconds:
@@ -39,7 +43,7 @@ class CatchPlannerTest {
             Vec3 vArrive = v0.plus(GRAVITY.times(t));
             assertTrue(vArrive.y() < 0, "construction must arrive descending");
 
-            CatchPlanner.Plan plan = planner.plan(RigidState.at(p0, v0), sphere, ready);
+            CatchPlanner.Plan plan = planner.plan(RigidState.at(p0, v0), sphere, centred, ready, ANYWHERE);
 
             assertEquals(t, plan.duration(), TOLERANCE, "interception time");
             assertVec(p, plan.objectPosition(), "interception point");
@@ -55,25 +59,66 @@ class CatchPlannerTest {
     }
 
     @Test
-    void canLongAxisLiesAlongTheHandsZAxis() {
-        // sec. 3.6: for a can the hand's z axis is aligned with the can's long axis
+    void canLongAxisLiesAlongTheHandsZAxisAndFlatOnThePalm() {
+        // sec. 3.6: for a can the hand's z axis is aligned with the can's long axis; the back of
+        // the hand faces the incoming velocity as far as that allows (its part across the axis)
         ObjectSpec can = TestSupport.object("can");
         Vec3 p0 = new Vec3(0.05, 1.1, 1.2);
         Vec3 v0 = new Vec3(0, 1.0, -1.5);
         Quat tilt = Quat.fromAxisAngle(Vec3.Z, Math.toRadians(70)); // long axis (object y) tipped toward -x
-        CatchPlanner.Plan plan = planner.plan(new RigidState(p0, tilt, v0, Vec3.ZERO), can, ready);
+        CatchPlanner.Plan plan = planner.plan(new RigidState(p0, tilt, v0, Vec3.ZERO), can, centred, ready, ANYWHERE);
         Vec3 axis = tilt.rotate(can.longAxis().orElseThrow());
-        Vec3 back = plan.objectVelocity().normalized();
-        Vec3 expected = axis.minus(back.times(axis.dot(back))).normalized();
-        Vec3 z = plan.palmTarget().rotation().zAxis();
-        assertEquals(1.0, Math.abs(z.dot(expected)), 1e-9, "hand z along the projected long axis");
-        assertEquals(0.0, z.dot(plan.palmTarget().rotation().yAxis()), 1e-9, "frame stays orthonormal");
+        Quat r = plan.palmTarget().rotation();
+        assertEquals(1.0, Math.abs(r.zAxis().dot(axis)), 1e-9, "hand z along the long axis");
+        Vec3 v = plan.objectVelocity();
+        Vec3 across = v.minus(axis.times(v.dot(axis))).normalized();
+        assertVec(across, r.yAxis(), "back of the hand along the velocity across the axis");
+    }
+
+    @Test
+    void graspOffsetPlacesTheObjectOnTheHand() {
+        // the object's centre arrives at (0, -halfThickness, 0) + offset in the palm frame
+        ObjectSpec can = TestSupport.object("can");
+        Grasp distal = new Grasp("open", "closed", new Vec3(0.03, -0.01, 0.005));
+        RigidState launch = new RigidState(new Vec3(0.05, 1.1, 1.2), Quat.fromAxisAngle(Vec3.Z, 1.2), new Vec3(0, 1.0, -1.5),
+                Vec3.ZERO);
+        CatchPlanner.Plan plan = planner.plan(launch, can, distal, ready, ANYWHERE);
+        Vec3 inPalm = plan.palmTarget().rotation().inverseRotate(plan.objectPosition().minus(plan.palmTarget().origin()));
+        assertVec(new Vec3(0.03, -can.halfThickness() - 0.01, 0.005), inPalm, "object centre in the palm frame");
+    }
+
+    @Test
+    void unreachableHeadingsTurnThePalmToTheNearestReachableOne() {
+        // an arm that can only hold the palm with its z axis within 20 deg of a direction 50 deg
+        // round the palm normal from the preferred heading: of the tried turns (0, +-15, +-30,
+        // +-45, ...) only +45 and +60 are within 20 deg, and the search takes the smaller
+        ObjectSpec sphere = TestSupport.object("sphere");
+        RigidState launch = RigidState.at(new Vec3(0.05, 1.1, 1.2), new Vec3(0, 1.0, -1.5));
+        Quat preferred = planner.plan(launch, sphere, centred, ready, ANYWHERE).palmTarget().rotation();
+        Vec3 allowed = preferred.mul(Quat.fromAxisAngle(Vec3.Y, Math.toRadians(50))).zAxis();
+        CatchPlanner.Reach narrow = palm -> palm.rotation().zAxis().dot(allowed) > Math.cos(Math.toRadians(20))
+                ? new DlsIk.Residual(0, 0) : new DlsIk.Residual(0.1, 0.5);
+        Quat turned = planner.plan(launch, sphere, centred, ready, narrow).palmTarget().rotation();
+        assertEquals(Math.toRadians(45), preferred.angleTo(turned), 1e-9, "turned by the first reachable step");
+        assertVec(preferred.yAxis(), turned.yAxis(), "turned about the palm normal only");
+    }
+
+    @Test
+    void withNoReachableHeadingThePlannerKeepsTheBestReachedOne() {
+        // every frame is out of reach; the miss is smallest 30 deg round from the preferred heading
+        ObjectSpec sphere = TestSupport.object("sphere");
+        RigidState launch = RigidState.at(new Vec3(0.05, 1.1, 1.2), new Vec3(0, 1.0, -1.5));
+        Quat preferred = planner.plan(launch, sphere, centred, ready, ANYWHERE).palmTarget().rotation();
+        Vec3 best = preferred.mul(Quat.fromAxisAngle(Vec3.Y, Math.toRadians(-30))).zAxis();
+        CatchPlanner.Reach nowhere = palm -> new DlsIk.Residual(0.1 + 0.1 * (1 - palm.rotation().zAxis().dot(best)), 0);
+        Quat turned = planner.plan(launch, sphere, centred, ready, nowhere).palmTarget().rotation();
+        assertEquals(Math.toRadians(30), preferred.angleTo(turned), 1e-9, "the least-miss heading");
     }
 
     @Test
     void objectBelowThePlaneIsMetAfterTheMinimumTime() {
         Vec3 p0 = new Vec3(0, 0.5, 0.4);
-        CatchPlanner.Plan plan = planner.plan(RigidState.at(p0, new Vec3(0, -1, 0)), TestSupport.object("sphere"), ready);
+        CatchPlanner.Plan plan = planner.plan(RigidState.at(p0, new Vec3(0, -1, 0)), TestSupport.object("sphere"), centred, ready, ANYWHERE);
         assertEquals(0.12, plan.duration(), TOLERANCE, "catch.minDuration when the plane was already crossed");
         assertVec(new Vec3(0, 0.5 - 0.12 - 0.5 * 9.81 * 0.12 * 0.12, 0.4), plan.objectPosition(), "ballistic position");
     }

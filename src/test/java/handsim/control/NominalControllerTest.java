@@ -29,7 +29,7 @@ class NominalControllerTest {
     private final double tick = config.periodSteps() * TestSupport.simConfig().timeStep();
     private final Kinematics kin = new Kinematics(model);
     private final NominalController controller = new NominalController(model, config, TestSupport.object("sphere"),
-            "closed", new NominalThrowPolicy(config.nominalThrows(), () -> 1.2), GRAVITY);
+            new NominalThrowPolicy(config.nominalThrows(), () -> 1.2), GRAVITY);
     private final RigidState launch = RigidState.at(new Vec3(0.05, 1.2, 1.2), new Vec3(0, 1.0, -1.3));
 
     @Test
@@ -96,6 +96,7 @@ class NominalControllerTest {
         Frame palm = kin.siteFrame(model.site("palm_center"), q);
         Vec3 p = launch.position().plus(launch.velocity().times(t)).plus(GRAVITY.times(0.5 * t * t));
         Vec3 v = launch.velocity().plus(GRAVITY.times(t));
-        return new Observation(t, q, new double[q.length], palm, Vec3.ZERO, RigidState.at(p, v), touched);
+        long palmBody = 1L << model.body("palm").index();
+        return new Observation(t, q, new double[q.length], palm, Vec3.ZERO, RigidState.at(p, v), touched ? palmBody : 0);
     }
 }
