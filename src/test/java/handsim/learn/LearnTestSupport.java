@@ -20,4 +20,18 @@ final class LearnTestSupport {
         Json defaults = Json.load(Home.resolve("configs/train/ddpg-defaults.json"));
         return TrainingConfig.parse(Json.of("test config", Json.withOverrides("test config", defaults.node(), overrides)));
     }
+
+    /** Mean reward per decision of the deterministic policy over {@code episodes} fresh episodes. */
+    static double meanReward(Env env, Policy policy, int episodes, long seed) {
+        double sum = 0;
+        int n = 0;
+        Rng seeds = new Rng(seed);
+        for (int e = 0; e < episodes; e++) {
+            Rollouts.Episode ep = Rollouts.play(env, new Rollouts.Request(seeds.nextLong(), 0, 0, false, 1000), policy::act,
+                    config().exploration(), t -> { });
+            sum += ep.reward();
+            n += ep.transitions().size();
+        }
+        return sum / n;
+    }
 }
