@@ -2,10 +2,9 @@ package handsim.learn;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.function.ToDoubleFunction;
 import org.apache.commons.math3.exception.TooManyEvaluationsException;
 import org.apache.commons.math3.optim.InitialGuess;
@@ -99,21 +98,10 @@ public final class Cmaes {
 
     /** Solves independent problems on a caller's executor; results in input order. */
     public static List<Result> minimizeAll(List<Problem> problems, ExecutorService executor) {
-        List<Future<Result>> futures = new ArrayList<>();
+        List<Callable<Result>> tasks = new ArrayList<>();
         for (Problem p : problems) {
-            futures.add(executor.submit(() -> minimize(p)));
+            tasks.add(() -> minimize(p));
         }
-        List<Result> out = new ArrayList<>();
-        try {
-            for (Future<Result> f : futures) {
-                out.add(f.get());
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while waiting for CMA-ES", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("a CMA-ES problem failed: " + e.getCause(), e.getCause());
-        }
-        return out;
+        return Parallel.inOrder(executor, tasks, "CMA-ES problem");
     }
 }

@@ -4,9 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Future;
 import java.util.function.Function;
 
 /**
@@ -95,28 +94,17 @@ public final class Rollouts {
     public static List<Episode> playAll(List<? extends Env> envs, ExecutorService executor, Policy policy,
             List<Request> requests, TrainingConfig.Exploration exploration) {
         BlockingQueue<Env> free = new ArrayBlockingQueue<>(envs.size(), false, envs);
-        List<Future<Episode>> futures = new ArrayList<>();
+        List<Callable<Episode>> tasks = new ArrayList<>();
         for (Request r : requests) {
-            futures.add(executor.submit(() -> {
+            tasks.add(() -> {
                 Env env = free.take();
                 try {
                     return play(env, r, policy::act, exploration, t -> { });
                 } finally {
                     free.put(env);
                 }
-            }));
+            });
         }
-        List<Episode> out = new ArrayList<>();
-        try {
-            for (Future<Episode> f : futures) {
-                out.add(f.get());
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted while waiting for rollouts", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("a rollout failed: " + e.getCause(), e.getCause());
-        }
-        return out;
+        return Parallel.inOrder(executor, tasks, "rollout");
     }
 }
