@@ -71,6 +71,23 @@ class DdpgAgentTest {
         assertFalse(Arrays.equals(net, netAfter), "the actor moved");
     }
 
+    @Test
+    void optionalL2AndClippingReachTheNetworks() {
+        TrainingConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
+                "ddpg.actorHidden", "[32]").ddpg();
+        DdpgAgent agent = DdpgAgent.create(c, 3, 2, 1);
+        var criticLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.critic.getLayerWiseConfigurations()
+                .getConf(0).getLayer();
+        var actorLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.actor.getLayerWiseConfigurations()
+                .getConf(0).getLayer();
+        assertEquals(org.deeplearning4j.nn.conf.GradientNormalization.ClipL2PerLayer, criticLayer.getGradientNormalization());
+        assertEquals(5.0, criticLayer.getGradientNormalizationThreshold(), 0.0);
+        assertEquals(1, criticLayer.getRegularization().size(), "L2 on the critic's weights");
+        assertTrue(actorLayer.getRegularization().isEmpty(), "actorL2 = 0: none on the actor");
+        assertEquals(2, agent.actor.getnLayers(), "one hidden layer of 32, then the output");
+        assertEquals(32, agent.actor.layerSize(0));
+    }
+
     private static double[] params(DdpgAgent a) {
         return concat(concat(Networks.rowMajor(a.actor.params()), Networks.rowMajor(a.critic.params())),
                 concat(Networks.rowMajor(a.actorTarget.params()), Networks.rowMajor(a.criticTarget.params())));
