@@ -1,0 +1,192 @@
+package handsim.learn;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.deeplearning4j.nn.multilayer.MultiLayerNetwork;
+import org.nd4j.linalg.activations.Activation;
+import org.nd4j.linalg.api.ndarray.INDArray;
+import org.nd4j.linalg.factory.Nd4j;
+import org.nd4j.linalg.indexing.NDArrayIndex;
+
+/**
+ * Deep deterministic policy gradient (Lillicrap et al. 2015, Alg. 1), the learner of paper
+ * sec. 3.7: an actor mu(s) in [-1, 1]^k (tanh output), a critic Q(s, a) (linear output, input
+ * the observation and action side by side), slowly tracking target copies of both, a replay
+ * buffer and an observation normaliser. Not thread-safe: one training thread owns the agent;
+ * rollout workers use {@link #policy} snapshots.
+ */
+public final class DdpgAgent {
+
+    /** Losses of one update: critic mean squared TD error and actor loss, mean -Q(s, mu(s)). */
+    public record Losses(double critic, double actor) {
+    }
+
+    final TrainingConfig.Ddpg config;
+    final int obsSize;
+    final int actionSize;
+    final MultiLayerNetwork actor;
+    final MultiLayerNetwork critic;
+    final MultiLayerNetwork actorTarget;
+    final MultiLayerNetwork criticTarget;
+    final Normalizer normalizer;
+    final ReplayBuffer replay;
+    final Rng replayRng;
+    long updates;
+
+    /**
+     * A fresh agent: random networks, targets equal to them, empty replay and statistics.
+     * Seeding: {@code seed} starts a generator whose first draw seeds the actor's weight
+     * initialisation, the second the critic's, the third the replay sampling.
+     */
+    public static DdpgAgent create(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+        Rng seeds = new Rng(seed);
+        MultiLayerNetwork actor = Networks.mlp(obsSize, c.actorHidden(), actionSize, Activation.TANH, c.actorLr(),
+                c.actorL2(), c, seeds.nextLong());
+        MultiLayerNetwork critic = Networks.mlp(obsSize + actionSize, c.criticHidden(), 1, Activation.IDENTITY,
+                c.criticLr(), c.criticL2(), c, seeds.nextLong());
+        return new DdpgAgent(c, obsSize, actionSize, actor, critic, actor.clone(), critic.clone(),
+                new Normalizer(obsSize, c.normalizeObservations(), c.observationClip(), c.observationMinStd()),
+                new ReplayBuffer(c.replayCapacity(), obsSize, actionSize), new Rng(seeds.nextLong()));
+    }
+
+    /** All parts given ({@link #create}, checkpoint loading). */
+    DdpgAgent(TrainingConfig.Ddpg config, int obsSize, int actionSize, MultiLayerNetwork actor, MultiLayerNetwork critic,
+            MultiLayerNetwork actorTarget, MultiLayerNetwork criticTarget, Normalizer normalizer, ReplayBuffer replay,
+            Rng replayRng) {
+        this.config = config;
+        this.obsSize = obsSize;
+        this.actionSize = actionSize;
+        this.actor = actor;
+        this.critic = critic;
+        this.actorTarget = actorTarget;
+        this.criticTarget = criticTarget;
+        this.normalizer = normalizer;
+        this.replay = replay;
+        this.replayRng = replayRng;
+    }
+
+    // ---- acting ---------------------------------------------------------------------------
+
+    public int observationSize() {
+        return obsSize;
+    }
+
+    public int actionSize() {
+        return actionSize;
+    }
+
+    public TrainingConfig.Ddpg config() {
+        return config;
+    }
+
+    /** Gradient updates done so far. */
+    public long updates() {
+        return updates;
+    }
+
+    public int replaySize() {
+        return replay.size();
+    }
+
+    /** The actor's deterministic action mu(s) for one raw observation. */
+    public double[] act(double[] obs) {
+        return Networks.rowMajor(actor.output(normalized(obs, 1), false));
+    }
+
+    /** The critic's estimate Q(s, a) for one raw observation and action. */
+    public double q(double[] obs, double[] action) {
+        INDArray s = normalized(obs, 1);
+        return critic.output(Nd4j.hstack(s, Networks.matrix(action, 1, actionSize)), false).getDouble(0);
+    }
+
+    /** Q(s, mu(s)): "Episode Q0" when s is an episode's first observation (paper Fig. 6). */
+    public double value(double[] obs) {
+        return q(obs, act(obs));
+    }
+
+    /** Adds an observation to the normaliser's running statistics. */
+    public void observe(double[] obs) {
+        normalizer.observe(obs);
+    }
+
+    /** Stores a transition; {@code terminal} only for real ends, not for truncations. */
+    public void store(double[] obs, double[] action, double reward, double[] nextObs, boolean terminal) {
+        replay.add(obs, action, reward, nextObs, terminal);
+    }
+
+    /** The actor as a plain-Java snapshot, with the normaliser's current statistics. */
+    public Policy policy(String note, String actionSpace) {
+        List<Policy.Layer> layers = new ArrayList<>();
+        for (var layer : actor.getLayers()) {
+            double[][] wt = layer.getParam("W").transpose().toDoubleMatrix(); // DL4J keeps W as [in, out]
+            double[] b = Networks.rowMajor(layer.getParam("b"));
+            String act = ((org.deeplearning4j.nn.conf.layers.BaseLayer) layer.conf().getLayer()).getActivationFn().toString();
+            layers.add(new Policy.Layer(wt, b, switch (act) {
+                case "relu" -> Policy.Activation.RELU;
+                case "tanh" -> Policy.Activation.TANH;
+                case "identity" -> Policy.Activation.IDENTITY;
+                default -> throw new IllegalStateException("unexpected activation " + act);
+            }));
+        }
+        boolean norm = normalizer.enabled();
+        return new Policy(norm ? normalizer.mean() : null, norm ? normalizer.std() : null, normalizer.clip(), layers,
+                note, actionSpace);
+    }
+
+    // ---- learning -------------------------------------------------------------------------
+
+    /** Whether the replay buffer holds enough transitions for a batch. */
+    public boolean canUpdate() {
+        return replay.size() >= config.batchSize();
+    }
+
+    /** One DDPG update on a batch drawn from the replay buffer (Alg. 1, inner loop). */
+    public Losses update() {
+        ReplayBuffer.Batch b = replay.sample(config.batchSize(), replayRng);
+        int n = b.size();
+        INDArray s = normalized(b.obs(), n);
+        INDArray a = Networks.matrix(b.actions(), n, actionSize);
+        INDArray y = Networks.matrix(tdTargets(b), n, 1);
+
+        // critic: minimise mean (Q(s, a) - y)^2
+        INDArray q = Networks.forwardForBackprop(critic, Nd4j.hstack(s, a));
+        INDArray err = q.sub(y);
+        double criticLoss = err.mul(err).meanNumber().doubleValue();
+        Networks.descend(critic, err.muli(2));
+
+        // actor: maximise Q(s, mu(s)), following dQ/da back through the actor (deterministic policy gradient)
+        INDArray mu = Networks.forwardForBackprop(actor, s);
+        INDArray qMu = Networks.forwardForBackprop(critic, Nd4j.hstack(s, mu));
+        double actorLoss = -qMu.meanNumber().doubleValue();
+        INDArray dLossDInput = Networks.inputGradient(critic, Nd4j.ones(qMu.dataType(), n, 1).negi());
+        INDArray dLossDAction = dLossDInput.get(NDArrayIndex.all(), NDArrayIndex.interval(obsSize, obsSize + actionSize)).dup();
+        Networks.descend(actor, dLossDAction);
+
+        Networks.softUpdate(actorTarget, actor, config.tau());
+        Networks.softUpdate(criticTarget, critic, config.tau());
+        updates++;
+        return new Losses(criticLoss, actorLoss);
+    }
+
+    /**
+     * TD targets y = r + gamma (1 - terminal) Q'(s', mu'(s')) with the target networks. A
+     * truncated step is not terminal: it bootstraps from s' like any other.
+     */
+    double[] tdTargets(ReplayBuffer.Batch b) {
+        int n = b.size();
+        INDArray s2 = normalized(b.nextObs(), n);
+        INDArray q2 = criticTarget.output(Nd4j.hstack(s2, actorTarget.output(s2, false)), false);
+        double[] y = new double[n];
+        for (int i = 0; i < n; i++) {
+            y[i] = b.rewards()[i] + (b.terminal()[i] ? 0 : config.gamma() * q2.getDouble(i, 0));
+        }
+        return y;
+    }
+
+    private INDArray normalized(double[] rowsOfObs, int rows) {
+        if (rowsOfObs.length != rows * obsSize) {
+            throw new IllegalArgumentException("observation has " + rowsOfObs.length / rows + " entries, expected " + obsSize);
+        }
+        return Networks.matrix(normalizer.normalize(rowsOfObs), rows, obsSize);
+    }
+}

@@ -1,0 +1,258 @@
+package handsim.learn;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+
+/**
+ * The DDPG training driver for any {@link Env}: warm-up episodes with random actions, then the
+ * actor's action plus decaying noise; every decision stored in the replay buffer and followed
+ * by {@code updatesPerStep} updates (DDPG, Alg. 1). With {@code parallelEpisodes} K > 1 it plays
+ * K episodes at once with a frozen policy snapshot on several environment instances, then does
+ * their updates. Episode bookkeeping goes to a {@link TrainingListener}.
+ *
+ * <p>Warm-up and noise scale are decided per episode from the decisions done when it starts.
+ * Reproducible: one root seed fixes everything, and the run is the same whether it was
+ * interrupted and resumed from a {@link #checkpoint} or not (wall time aside).
+ */
+public final class Trainer {
+
+    private final TrainingConfig config;
+    private final DdpgAgent agent;
+    private final Rng episodeRng;
+    private final ArrayDeque<Double> recentRewards = new ArrayDeque<>();
+    private long episodes;
+    private long steps;
+    private final double elapsedBefore;
+    private final long startNanos = System.nanoTime();
+    private double criticLossSum; // over the updates since the last reported episode
+    private double actorLossSum;
+    private int lossCount;
+
+    private Trainer(TrainingConfig config, DdpgAgent agent, Rng episodeRng, double elapsedBefore) {
+        this.config = config;
+        this.agent = agent;
+        this.episodeRng = episodeRng;
+        this.elapsedBefore = elapsedBefore;
+    }
+
+    /**
+     * A fresh run. Seeding: the root seed starts one generator; its first draw seeds the agent
+     * (weights, replay sampling), its second the episodes (each episode draws its env and
+     * noise seeds from it, in episode order).
+     */
+    public static Trainer create(TrainingConfig config, int obsSize, int actionSize) {
+        Rng root = new Rng(config.seed());
+        DdpgAgent agent = DdpgAgent.create(config.ddpg(), obsSize, actionSize, root.nextLong());
+        return new Trainer(config, agent, new Rng(root.nextLong()), 0);
+    }
+
+    /** A run with a given agent (e.g. one whose actor was pretrained, {@link ActorPretraining}). */
+    public static Trainer withAgent(TrainingConfig config, DdpgAgent agent) {
+        if (!config.ddpg().equals(agent.config())) {
+            throw new IllegalArgumentException("the agent was built with another ddpg section than the run's");
+        }
+        Rng root = new Rng(config.seed());
+        root.nextLong();
+        return new Trainer(config, agent, new Rng(root.nextLong()), 0);
+    }
+
+    /** Continues a run from its checkpoint, with the configuration saved there. */
+    public static Trainer resume(Path checkpoint) throws IOException {
+        return resume(checkpoint, null);
+    }
+
+    /**
+     * Continues a run from its checkpoint with another configuration (e.g. more episodes);
+     * {@code null} keeps the saved one. The learner's section must be unchanged.
+     */
+    public static Trainer resume(Path checkpoint, TrainingConfig override) throws IOException {
+        Checkpoints.Loaded loaded = Checkpoints.load(checkpoint);
+        if (loaded.extra() == null) {
+            throw new IOException(checkpoint + ": holds an agent but no trainer state");
+        }
+        Json s = Json.of(checkpoint + "!state.json:extra", loaded.extra());
+        TrainingConfig saved = TrainingConfig.parse(s.get("config"));
+        TrainingConfig config = override == null ? saved : override;
+        if (!config.ddpg().equals(saved.ddpg())) {
+            throw new IllegalArgumentException("the ddpg section differs from the one saved in " + checkpoint);
+        }
+        Trainer t = new Trainer(config, loaded.agent(), new Rng(s.longValue("episodeRng")), s.number("elapsedSeconds"));
+        t.episodes = s.longValue("episodes");
+        t.steps = s.longValue("steps");
+        for (double r : s.numbers("recentRewards", -1)) {
+            t.recentRewards.add(r);
+        }
+        s.requireNoUnknownFields();
+        return t;
+    }
+
+    /** Saves the agent and this driver's state (atomically). Call between episodes. */
+    public void checkpoint(Path file) throws IOException {
+        ObjectNode s = Json.mapper().createObjectNode();
+        s.set("config", config.toJson());
+        s.put("episodes", episodes);
+        s.put("steps", steps);
+        s.put("episodeRng", episodeRng.state());
+        ArrayNode recent = s.putArray("recentRewards");
+        recentRewards.forEach(recent::add);
+        s.put("elapsedSeconds", elapsedSeconds());
+        Checkpoints.save(file, agent, s);
+    }
+
+    public DdpgAgent agent() {
+        return agent;
+    }
+
+    public TrainingConfig config() {
+        return config;
+    }
+
+    /** Episodes played so far. */
+    public long episodes() {
+        return episodes;
+    }
+
+    /** Decisions taken so far. */
+    public long steps() {
+        return steps;
+    }
+
+    /**
+     * Trains until {@code training.episodes} episodes are done, saving {@code checkpointFile}
+     * (if not null) every {@code checkpointEveryEpisodes} episodes and at the end.
+     * {@code executor} may be null when {@code parallelEpisodes} is 1 (then only the first
+     * environment is used).
+     */
+    public void train(List<? extends Env> envs, ExecutorService executor, TrainingListener listener, Path checkpointFile)
+            throws IOException {
+        int every = config.training().checkpointEveryEpisodes();
+        while (episodes < config.training().episodes()) {
+            long before = episodes;
+            if (config.training().parallelEpisodes() == 1) {
+                runEpisode(envs.get(0), listener);
+            } else {
+                runRound(envs, executor, listener);
+            }
+            if (checkpointFile != null && every > 0 && episodes / every != before / every) {
+                checkpoint(checkpointFile);
+            }
+        }
+        if (checkpointFile != null) {
+            checkpoint(checkpointFile);
+        }
+    }
+
+    /** One episode of online learning: store and update after every decision. */
+    public EpisodeStats runEpisode(Env env, TrainingListener listener) {
+        Rollouts.Request req = nextRequest();
+        double[] q0 = {Double.NaN};
+        Rollouts.Episode ep = Rollouts.play(env, req, agent::act, config.exploration(), new Rollouts.StepHook() {
+            @Override
+            public void onReset(double[] first) {
+                agent.observe(first);
+                q0[0] = agent.value(first);
+            }
+
+            @Override
+            public void afterStep(Rollouts.Transition t) {
+                learnFrom(t, listener);
+            }
+        });
+        return finishEpisode(ep, q0[0], meanCriticLoss(), meanActorLoss(), steps, listener);
+    }
+
+    /**
+     * {@code parallelEpisodes} episodes played at once with the current policy snapshot, then
+     * their updates; results in episode order whatever the number of workers. The round's mean
+     * losses are reported on each of its episodes.
+     */
+    public List<EpisodeStats> runRound(List<? extends Env> envs, ExecutorService executor, TrainingListener listener) {
+        int k = (int) Math.min(config.training().parallelEpisodes(), Math.max(1, config.training().episodes() - episodes));
+        List<Rollouts.Request> requests = new ArrayList<>();
+        for (int i = 0; i < k; i++) {
+            requests.add(nextRequest());
+        }
+        Policy snapshot = agent.policy("training snapshot", "[-1, 1]^" + agent.actionSize());
+        List<Rollouts.Episode> played = Rollouts.playAll(envs, executor, snapshot, requests, config.exploration());
+        double[] q0 = new double[k];
+        for (int i = 0; i < k; i++) {
+            q0[i] = agent.value(played.get(i).firstObservation()); // the networks the episodes were played with
+        }
+        long stepsAtEnd = steps;
+        for (Rollouts.Episode ep : played) {
+            agent.observe(ep.firstObservation());
+            for (Rollouts.Transition t : ep.transitions()) {
+                learnFrom(t, listener);
+            }
+        }
+        double criticLoss = meanCriticLoss(), actorLoss = meanActorLoss();
+        List<EpisodeStats> out = new ArrayList<>();
+        for (int i = 0; i < k; i++) {
+            stepsAtEnd += played.get(i).transitions().size();
+            out.add(finishEpisode(played.get(i), q0[i], criticLoss, actorLoss, stepsAtEnd, listener));
+        }
+        return out;
+    }
+
+    private Rollouts.Request nextRequest() {
+        long envSeed = episodeRng.nextLong();
+        long noiseSeed = episodeRng.nextLong();
+        boolean warmup = steps < config.exploration().warmupSteps();
+        return new Rollouts.Request(envSeed, noiseSeed, config.exploration().sigmaAt(steps), warmup,
+                config.training().maxDecisionsPerEpisode());
+    }
+
+    /** Store a decision; after the warm-up, do the updates it is worth. */
+    private void learnFrom(Rollouts.Transition t, TrainingListener listener) {
+        agent.observe(t.nextObs());
+        agent.store(t.obs(), t.action(), t.reward(), t.nextObs(), t.terminal());
+        steps++;
+        if (steps < config.exploration().warmupSteps() || !agent.canUpdate()) {
+            return;
+        }
+        for (int u = 0; u < config.training().updatesPerStep(); u++) {
+            DdpgAgent.Losses losses = agent.update();
+            criticLossSum += losses.critic();
+            actorLossSum += losses.actor();
+            lossCount++;
+            listener.onUpdate(agent.updates(), losses);
+        }
+    }
+
+    private double meanCriticLoss() {
+        return lossCount == 0 ? Double.NaN : criticLossSum / lossCount;
+    }
+
+    private double meanActorLoss() {
+        return lossCount == 0 ? Double.NaN : actorLossSum / lossCount;
+    }
+
+    private EpisodeStats finishEpisode(Rollouts.Episode ep, double q0, double criticLoss, double actorLoss,
+            long stepsAtEnd, TrainingListener listener) {
+        episodes++;
+        recentRewards.addLast(ep.reward());
+        while (recentRewards.size() > config.training().movingAverageWindow()) {
+            recentRewards.removeFirst();
+        }
+        double average = recentRewards.stream().mapToDouble(Double::doubleValue).average().orElse(Double.NaN);
+        EpisodeStats stats = new EpisodeStats(episodes, stepsAtEnd, ep.transitions().size(), ep.reward(), average, q0,
+                criticLoss, actorLoss, agent.updates(), ep.terminal(),
+                ep.request().randomActions() ? Double.NaN : ep.request().sigma(), elapsedSeconds());
+        criticLossSum = 0;
+        actorLossSum = 0;
+        lossCount = 0;
+        listener.onEpisode(stats);
+        return stats;
+    }
+
+    private double elapsedSeconds() {
+        return elapsedBefore + (System.nanoTime() - startNanos) * 1e-9;
+    }
+}

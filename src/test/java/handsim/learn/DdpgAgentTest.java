@@ -1,0 +1,101 @@
+package handsim.learn;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import org.junit.jupiter.api.Test;
+import org.nd4j.linalg.api.ndarray.INDArray;
+import org.nd4j.linalg.factory.Nd4j;
+
+class DdpgAgentTest {
+
+    @Test
+    void tdTargetBootstrapsUnlessTerminal() {
+        DdpgAgent agent = PolicyTest.trainedAgent(3, 2, 11);
+        double gamma = agent.config().gamma();
+        double[] s = {0.1, 0.2, 0.3}, s2 = {-0.5, 0.4, 1.5}, a = {0.3, -0.2};
+        ReplayBuffer.Batch b = new ReplayBuffer.Batch(2, concat(s, s), concat(a, a), new double[] {0.7, 0.7},
+                concat(s2, s2), new boolean[] {true, false});
+        double[] y = agent.tdTargets(b);
+        // the target networks' own estimate at s', computed independently
+        INDArray s2n = Networks.matrix(agent.normalizer.normalize(s2), 1, 3);
+        double q2 = agent.criticTarget.output(Nd4j.hstack(s2n, agent.actorTarget.output(s2n, false)), false).getDouble(0);
+        assertEquals(0.7, y[0], 0.0, "terminal: no bootstrap");
+        assertEquals(0.7 + gamma * q2, y[1], 1e-12, "not terminal (a truncated step included): bootstrap from s'");
+        assertTrue(Math.abs(q2) > 1e-4, "the check needs a target value away from 0, got " + q2);
+    }
+
+    @Test
+    void criticInputGradientMatchesFiniteDifferences() {
+        DdpgAgent agent = PolicyTest.trainedAgent(4, 3, 12);
+        double[] x = {0.3, -0.2, 0.5, 0.1, 0.2, -0.4, 0.6};
+        INDArray in = Networks.matrix(x, 1, 7);
+        Networks.forwardForBackprop(agent.critic, in);
+        double[] grad = Networks.rowMajor(Networks.inputGradient(agent.critic, Nd4j.ones(in.dataType(), 1, 1)));
+        double h = 1e-6;
+        for (int i = 0; i < 7; i++) {
+            double[] xp = x.clone(), xm = x.clone();
+            xp[i] += h;
+            xm[i] -= h;
+            double fd = (agent.critic.output(Networks.matrix(xp, 1, 7), false).getDouble(0)
+                    - agent.critic.output(Networks.matrix(xm, 1, 7), false).getDouble(0)) / (2 * h);
+            // central differences in double precision: error ~ h^2 f''' + eps / h, about 1e-9 here
+            assertEquals(fd, grad[i], 1e-7, "dQ/dx_" + i);
+        }
+    }
+
+    @Test
+    void sameSeedSameDataSameNetworks() {
+        double[] p1 = params(PolicyTest.trainedAgent(6, 2, 21));
+        double[] p2 = params(PolicyTest.trainedAgent(6, 2, 21));
+        double[] p3 = params(PolicyTest.trainedAgent(6, 2, 22));
+        assertArrayEquals(p1, p2, 0.0);
+        assertFalse(Arrays.equals(p1, p3));
+    }
+
+    @Test
+    void updatesMoveTargetsSlowly() {
+        DdpgAgent agent = PolicyTest.trainedAgent(3, 1, 13);
+        double[] before = Networks.rowMajor(agent.actorTarget.params());
+        double[] net = Networks.rowMajor(agent.actor.params());
+        agent.update();
+        double[] netAfter = Networks.rowMajor(agent.actor.params());
+        double[] after = Networks.rowMajor(agent.actorTarget.params());
+        double tau = agent.config().tau();
+        for (int i = 0; i < before.length; i += 7) {
+            assertEquals((1 - tau) * before[i] + tau * netAfter[i], after[i], 1e-12);
+        }
+        assertFalse(Arrays.equals(net, netAfter), "the actor moved");
+    }
+
+    @Test
+    void optionalL2AndClippingReachTheNetworks() {
+        TrainingConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
+                "ddpg.actorHidden", "[32]").ddpg();
+        DdpgAgent agent = DdpgAgent.create(c, 3, 2, 1);
+        var criticLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.critic.getLayerWiseConfigurations()
+                .getConf(0).getLayer();
+        var actorLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.actor.getLayerWiseConfigurations()
+                .getConf(0).getLayer();
+        assertEquals(org.deeplearning4j.nn.conf.GradientNormalization.ClipL2PerLayer, criticLayer.getGradientNormalization());
+        assertEquals(5.0, criticLayer.getGradientNormalizationThreshold(), 0.0);
+        assertEquals(1, criticLayer.getRegularization().size(), "L2 on the critic's weights");
+        assertTrue(actorLayer.getRegularization().isEmpty(), "actorL2 = 0: none on the actor");
+        assertEquals(2, agent.actor.getnLayers(), "one hidden layer of 32, then the output");
+        assertEquals(32, agent.actor.layerSize(0));
+    }
+
+    private static double[] params(DdpgAgent a) {
+        return concat(concat(Networks.rowMajor(a.actor.params()), Networks.rowMajor(a.critic.params())),
+                concat(Networks.rowMajor(a.actorTarget.params()), Networks.rowMajor(a.criticTarget.params())));
+    }
+
+    static double[] concat(double[] a, double[] b) {
+        double[] c = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, c, a.length, b.length);
+        return c;
+    }
+}

@@ -1,0 +1,38 @@
+package handsim.learn;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class MetricsCsvTest {
+
+    private static EpisodeStats stats(long episode) {
+        return new EpisodeStats(episode, 5 * episode, 5, 0.25 * episode, 0.1, episode == 1 ? Double.NaN : -0.5, Double.NaN,
+                Double.NaN, 0, episode % 2 == 0, Double.NaN, 0.125 * episode);
+    }
+
+    @Test
+    void rowsRoundTripAndAResumeDropsEpisodesAfterTheCheckpoint(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("metrics.csv");
+        try (MetricsCsv csv = MetricsCsv.open(file, 0)) {
+            for (long e = 1; e <= 5; e++) {
+                csv.onEpisode(stats(e));
+            }
+        }
+        assertEquals(List.of(stats(1), stats(2), stats(3), stats(4), stats(5)), MetricsCsv.read(file));
+        try (MetricsCsv csv = MetricsCsv.open(file, 3)) { // checkpoint after episode 3, episodes 4-5 are replayed
+            csv.onEpisode(stats(4));
+        }
+        assertEquals(List.of(stats(1), stats(2), stats(3), stats(4)), MetricsCsv.read(file));
+
+        Path png = dir.resolve("rewards.png");
+        LearningCurves.plotRewards(png, MetricsCsv.read(file), "toy");
+        LearningCurves.plotLosses(dir.resolve("losses.png"), MetricsCsv.read(file), "toy");
+        assertTrue(Files.size(png) > 1000 && Files.size(dir.resolve("losses.png")) > 1000);
+    }
+}

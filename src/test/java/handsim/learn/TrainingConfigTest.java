@@ -1,0 +1,52 @@
+package handsim.learn;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.config.ConfigException;
+import handsim.config.Json;
+import org.junit.jupiter.api.Test;
+
+class TrainingConfigTest {
+
+    @Test
+    void defaultsParseAndRoundTripThroughJson() {
+        TrainingConfig c = LearnTestSupport.config();
+        assertEquals(java.util.List.of(64, 64), c.ddpg().actorHidden(), "paper sec. 3.7: two layers of 64");
+        assertEquals(c, TrainingConfig.parse(Json.of("round trip", c.toJson())));
+    }
+
+    @Test
+    void badValuesAreNamedWithTheirField() {
+        ConfigException e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.tau", "2"));
+        assertTrue(e.getMessage().contains("ddpg.tau") && e.getMessage().contains("2.0"), e.getMessage());
+        e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("exploration.noise", "\"pink\""));
+        assertTrue(e.getMessage().contains("exploration.noise") && e.getMessage().contains("pink"), e.getMessage());
+        e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.actorHidden", "[64, 0.5]"));
+        assertTrue(e.getMessage().contains("ddpg.actorHidden") && e.getMessage().contains("0.5"), e.getMessage());
+        e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.replayCapacity", "10"));
+        assertTrue(e.getMessage().contains("ddpg.replayCapacity") && e.getMessage().contains("batchSize"), e.getMessage());
+    }
+
+    @Test
+    void unknownAndMissingFieldsAreRejected() {
+        Json j = Json.parse("t", "{\"seed\": 1, \"ddpg\": {}}");
+        ConfigException e = assertThrows(ConfigException.class, () -> TrainingConfig.parse(j));
+        assertTrue(e.getMessage().contains("ddpg.actorHidden") && e.getMessage().contains("missing"), e.getMessage());
+        var node = LearnTestSupport.config().toJson();
+        ((com.fasterxml.jackson.databind.node.ObjectNode) node.get("training")).put("episodez", 3);
+        e = assertThrows(ConfigException.class, () -> TrainingConfig.parse(Json.of("t", node)));
+        assertTrue(e.getMessage().contains("training.episodez"), e.getMessage());
+    }
+
+    @Test
+    void noiseScaleDecaysLinearly() {
+        TrainingConfig.Exploration x = LearnTestSupport.config("exploration.sigma", "0.3", "exploration.sigmaFinal", "0.1",
+                "exploration.sigmaDecaySteps", "100").exploration();
+        assertEquals(0.3, x.sigmaAt(0), 1e-15);
+        assertEquals(0.2, x.sigmaAt(50), 1e-15);
+        assertEquals(0.1, x.sigmaAt(100), 1e-15);
+        assertEquals(0.1, x.sigmaAt(1000), 1e-15);
+    }
+}
