@@ -1,5 +1,6 @@
 package handsim.app;
 
+import handsim.config.Home;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
@@ -11,7 +12,9 @@ import handsim.task.HeightGoals;
 import handsim.task.Scene;
 import handsim.task.ServoLoop;
 import handsim.viewer.Camera;
+import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;
+import handsim.viewer.ViewerConfig;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -19,7 +22,7 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code handsim render}: a headless run written as numbered PNG frames ({@code 00000.png}, ...),
- * from a fixed camera. Without {@code --controller} the foundation's held-ball scene; with it,
+ * from the home camera of {@code configs/viewer.json}, drawn by the viewer's renderer. Without {@code --controller} the foundation's held-ball scene; with it,
  * the controller's catch-and-throw loop.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
@@ -66,11 +69,14 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--controller must be nominal, got " + controller);
         }
         int frames = (int) Math.round(seconds * fps);
-        try (Scene scene = scene(); OffscreenRenderer renderer = new OffscreenRenderer(width, height)) {
-            Camera camera = new Camera();
+        ViewerConfig config = ViewerConfig.load(Home.resolve("configs/viewer.json"));
+        try (Scene scene = scene(); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);
+                FrameFolder folder = new FrameFolder(out)) {
+            Camera camera = new Camera(config.camera());
             long t0 = System.nanoTime();
             for (int f = 0; f < frames; f++) {
-                OffscreenRenderer.writePng(renderer.render(scene.snapshot(), camera, null), out.resolve(String.format("%05d.png", f)));
+                var image = renderer.render(scene.snapshot(), camera, null);
+                folder.add(() -> image);
                 if (f % Math.max(1, fps / 2) == 0 || f == frames - 1) {
                     System.out.printf("frame %d/%d  t=%.2f s  %s%n", f + 1, frames, scene.time(), scene.status());
                 }
