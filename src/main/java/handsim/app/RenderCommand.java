@@ -1,6 +1,5 @@
 package handsim.app;
 
-import handsim.config.Home;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
@@ -73,7 +72,7 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--controller must be nominal, got " + controller);
         }
         int frames = (int) Math.round(seconds * fps);
-        ViewerConfig config = ViewerConfig.load(Home.resolve("configs/viewer.json"));
+        ViewerConfig config = ViewerSession.config();
         try (Scene scene = scene(config); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);
                 FrameFolder folder = new FrameFolder(out)) {
             Camera camera = new Camera(config.camera());
