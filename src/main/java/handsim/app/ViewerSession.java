@@ -59,16 +59,17 @@ final class ViewerSession {
             run.start();
             System.out.println(prefix + shown.task() + " task, " + shown.object() + ", " + shown.controller()
                     + " controller, seed " + shown.seed() + "; H in the window lists the keys, Esc quits");
-            Viewer.Stats stats = viewer.run(benchmarkFrames);
+            double warmup = benchmarkFrames > 0 ? config.benchmark().warmupSeconds() : 0;
+            Viewer.Stats stats = viewer.run(benchmarkFrames, warmup);
             if (screenshot != null) {
                 System.out.println(prefix + "screenshot " + viewer.writeScreenshot(screenshot));
             }
             if (benchmarkFrames > 0) {
                 int[] size = viewer.size();
-                System.out.printf(Locale.ROOT, "%sbenchmark: %d frames in %.2f s: mean %.1f FPS; real-time factor %.3f "
-                        + "(%.2f simulated s, h = %.1f ms); %dx%d, %s%n", prefix, stats.frames(), stats.wallSeconds(),
-                        stats.fps(), stats.realTimeFactor(), stats.simSeconds(), Runtime.simConfig().timeStep() * 1e3,
-                        size[0], size[1], viewer.glRenderer());
+                System.out.printf(Locale.ROOT, "%sbenchmark: %d frames in %.2f s after a %.1f s warm-up: mean %.1f FPS; "
+                        + "real-time factor %.3f (%.2f simulated s, h = %.1f ms); %dx%d, %s%n", prefix, stats.frames(),
+                        stats.wallSeconds(), warmup, stats.fps(), stats.realTimeFactor(), stats.simSeconds(),
+                        Runtime.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
             }
         }
         return 0;

@@ -34,6 +34,7 @@ public final class LiveRun implements AutoCloseable {
     private final Queue<Consumer<InteractiveScene>> commands = new ConcurrentLinkedQueue<>();
     private final Queue<String> notes = new ConcurrentLinkedQueue<>();
     private volatile LiveFrame latest;
+    private volatile boolean behind;
     private volatile boolean running;
     private Thread thread;
     private long sequence;
@@ -105,6 +106,7 @@ public final class LiveRun implements AutoCloseable {
             clock.advanced(advanced);
             changed = true;
         }
+        behind = clock.owed() > maxChunk;
         measure(wallSeconds, advanced);
         if (changed) {
             publish();
@@ -137,6 +139,14 @@ public final class LiveRun implements AutoCloseable {
     private void publish() {
         latest = new LiveFrame(scene.snapshot(), Collections.unmodifiableMap(new LinkedHashMap<>(scene.status())),
                 scene.goal(), clock.speed(), clock.isPaused(), rate, sequence++);
+    }
+
+    /**
+     * True while the scene owes more than one chunk of simulated time: it is not keeping up with
+     * the wall clock, and a watcher drawing on the same cores should leave it room.
+     */
+    public boolean behind() {
+        return behind;
     }
 
     /** The newest frame (never null). */

@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.Locale;
+import java.util.concurrent.locks.LockSupport;
 import org.lwjgl.BufferUtils;
 import org.lwjgl.glfw.Callbacks;
 
@@ -36,6 +37,8 @@ public final class Viewer implements AutoCloseable {
 
     /** Wall seconds over which the displayed frame rate is measured. */
     static final double FPS_WINDOW = 0.5;
+    /** How long the viewer sleeps at a time while it leaves the cores to a lagging simulation. */
+    static final long YIELD_SLICE_NANOS = 500_000;
     private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss-SSS");
 
     private final ViewerConfig config;
@@ -77,13 +80,30 @@ public final class Viewer implements AutoCloseable {
 
     /** Draws until the window is closed, Esc is pressed, or {@code maxFrames} frames (0: no limit). */
     public Stats run(int maxFrames) {
+        return run(maxFrames, 0);
+    }
+
+    /**
+     * Draws for {@code warmupSeconds} (while the JIT compiles the simulation's hot paths), then
+     * until the window is closed, Esc is pressed, or {@code maxFrames} more frames (0: no limit).
+     * The stats count the frames after the warm-up only.
+     */
+    public Stats run(int maxFrames, double warmupSeconds) {
         long start = System.nanoTime();
         double simStart = run.simulatedSeconds();
+        long countFrom = start;
+        boolean warm = warmupSeconds <= 0;
         double windowStart = 0, last = 0;
         int frames = 0, windowFrames = 0;
         while (!glfwWindowShouldClose(window.handle) && !controls.quitRequested && (maxFrames <= 0 || frames < maxFrames)) {
+            if (!warm && (System.nanoTime() - start) / 1e9 >= warmupSeconds) {
+                warm = true;
+                countFrom = System.nanoTime();
+                simStart = run.simulatedSeconds();
+            }
+            long frameStart = System.nanoTime();
             glfwPollEvents();
-            clock = (System.nanoTime() - start) / 1e9;
+            clock = (frameStart - start) / 1e9;
             LiveFrame f = run.latest();
             controls.syncPaused(f.paused());
             for (String note; (note = run.pollNote()) != null; ) {
@@ -94,7 +114,8 @@ public final class Viewer implements AutoCloseable {
             draw(f);
             takePictures(f);
             glfwSwapBuffers(window.handle);
-            frames++;
+            yieldToSimulation(frameStart);
+            frames += warm ? 1 : 0;
             windowFrames++;
             if (clock - windowStart >= FPS_WINDOW) {
                 fps = windowFrames / (clock - windowStart);
@@ -102,8 +123,22 @@ public final class Viewer implements AutoCloseable {
                 windowFrames = 0;
             }
         }
-        double wall = (System.nanoTime() - start) / 1e9;
+        double wall = (System.nanoTime() - countFrom) / 1e9;
         return new Stats(frames, wall, run.simulatedSeconds() - simStart);
+    }
+
+    /**
+     * Physics first: while the run falls behind real time, frames come no faster than
+     * {@code window.fpsWhenBehind}, so that drawing does not take the cores the simulation needs.
+     */
+    private void yieldToSimulation(long frameStart) {
+        if (!run.behind()) {
+            return;
+        }
+        long until = frameStart + (long) (1e9 / config.window().fpsWhenBehind());
+        for (long now = System.nanoTime(); now < until && run.behind(); now = System.nanoTime()) {
+            LockSupport.parkNanos(Math.min(until - now, YIELD_SLICE_NANOS));
+        }
     }
 
     private void follow(LiveFrame f, double dt) {

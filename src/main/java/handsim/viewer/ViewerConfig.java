@@ -9,11 +9,14 @@ import java.util.List;
  * Everything tunable about drawing and the interactive viewer, from {@code configs/viewer.json}.
  * Every field is required and validated; messages name the field and the value.
  */
-public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Goals goals, Stage stage,
-        Overlays overlays, Hud hud, Recording recording, Palette colours) {
+public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benchmark benchmark, Goals goals,
+        Stage stage, Overlays overlays, Hud hud, Recording recording, Palette colours) {
 
-    /** Window size in pixels; vsync caps the frame rate at the display's refresh. */
-    public record Window(int width, int height, boolean vsync) {
+    /**
+     * Window size in pixels; vsync caps the frame rate at the display's refresh; while the
+     * simulation falls behind real time, frames come no faster than {@code fpsWhenBehind}.
+     */
+    public record Window(int width, int height, boolean vsync, double fpsWhenBehind) {
     }
 
     /**
@@ -31,6 +34,10 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Goal
         public Pacing {
             slowMotion = List.copyOf(slowMotion);
         }
+    }
+
+    /** {@code --benchmark-frames} counts frames only after drawing for {@code warmupSeconds}. */
+    public record Benchmark(double warmupSeconds) {
     }
 
     /** Steps and bounds of the goal keys, and the size of the drawn height plane. */
@@ -64,7 +71,9 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Goal
     public static ViewerConfig parse(Json j) {
         j.allow("comment");
         Json w = j.get("window");
-        Window window = new Window(w.integer("width", 64, 8192), w.integer("height", 64, 8192), w.bool("vsync", true));
+        w.allow("comment");
+        Window window = new Window(w.integer("width", 64, 8192), w.integer("height", 64, 8192), w.bool("vsync", true),
+                w.number("fpsWhenBehind", 1, 1000));
         Json c = j.get("camera");
         c.allow("comment");
         double minDistance = c.number("minDistance", 0.01, 100);
@@ -90,6 +99,9 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Goal
         }
         Pacing pacing = new Pacing(p.number("maxLagSeconds", 1e-3, 10), minChunk, p.number("maxChunkSeconds", minChunk, 1),
                 p.number("singleStepSeconds", 1e-6, 1), speeds);
+        Json b = j.get("benchmark");
+        b.allow("comment");
+        Benchmark benchmark = new Benchmark(b.number("warmupSeconds", 0, 60));
         Json g = j.get("goals");
         g.allow("comment");
         double heightMin = g.number("heightMin", 0.01, 10);
@@ -122,10 +134,10 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Goal
                 colour(k, "skin"), colour(k, "palm"), colour(k, "object"), colour(k, "staticBox"), colour(k, "shadow"),
                 colour(k, "goalPlane"), colour(k, "goalBox"), colour(k, "trail"), axes, colour(k, "hudPanel"),
                 colour(k, "hudText"), colour(k, "hudLabel"), colour(k, "hudWarning"));
-        for (Json node : new Json[] {w, c, p, g, st, o, h, r, k, j}) {
+        for (Json node : new Json[] {w, c, p, b, g, st, o, h, r, k, j}) {
             node.requireNoUnknownFields();
         }
-        return new ViewerConfig(window, camera, pacing, goals, stage, overlays, hud, recording, palette);
+        return new ViewerConfig(window, camera, pacing, benchmark, goals, stage, overlays, hud, recording, palette);
     }
 
     private static float[] colour(Json parent, String name) {

@@ -1,6 +1,7 @@
 package handsim.live;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -74,10 +75,12 @@ class LiveRunTest {
         LiveRun run = run(scene, new ArrayList<>());
         run.update(1.0);
         assertEquals(MAX_CHUNK, scene.time(), FakeScene.TICK);
+        assertTrue(run.behind(), "owing more than a chunk: behind real time");
         for (int i = 0; i < 20; i++) {
             run.update(0);
         }
         assertEquals(MAX_LAG, scene.time(), FakeScene.TICK, "the lag is paid back, the rest of the stall is dropped");
+        assertFalse(run.behind(), "caught up");
     }
 
     @Test
