@@ -24,7 +24,8 @@ public final class LiveRun implements AutoCloseable {
 
     /** Wall seconds over which the displayed real-time factor is measured. */
     static final double RATE_WINDOW = 0.5;
-    private static final long IDLE_PARK_NANOS = 500_000;
+    /** The longest the run's thread sleeps between passes: commands wait at most this long. */
+    private static final long MAX_PARK_NANOS = 2_000_000;
 
     private final InteractiveScene scene;
     private final SimClock clock;
@@ -74,7 +75,9 @@ public final class LiveRun implements AutoCloseable {
             boolean advanced = update((now - last) / 1e9);
             last = now;
             if (!advanced) {
-                LockSupport.parkNanos(IDLE_PARK_NANOS);
+                // sleep until the next chunk is due (or a command may be waiting)
+                double due = clock.wallSecondsUntilOwed(minChunk) * 1e9;
+                LockSupport.parkNanos((long) Math.max(1, Math.min(MAX_PARK_NANOS, due)));
             }
         }
     }

@@ -87,6 +87,14 @@ public final class SimClock {
         }
     }
 
+    /** Wall seconds until {@code simSeconds} will be owed (infinite while paused). */
+    public double wallSecondsUntilOwed(double simSeconds) {
+        if (owed() >= simSeconds) {
+            return 0;
+        }
+        return paused ? Double.POSITIVE_INFINITY : (simSeconds - owed()) / speed;
+    }
+
     /** Simulated seconds given up to the lag cap since the clock was made. */
     public double droppedSeconds() {
         return dropped;

@@ -47,6 +47,18 @@ class SimClockTest {
     }
 
     @Test
+    void saysWhenTheNextChunkIsDue() {
+        SimClock c = new SimClock(0.1);
+        c.setSpeed(0.5);
+        c.tick(0.002);
+        assertEquals((0.004 - 0.001) / 0.5, c.wallSecondsUntilOwed(0.004), EPS, "3 ms more owed at half speed: 6 ms");
+        c.tick(0.01);
+        assertEquals(0, c.wallSecondsUntilOwed(0.004), EPS);
+        c.setPaused(true);
+        assertEquals(Double.POSITIVE_INFINITY, c.wallSecondsUntilOwed(0.004));
+    }
+
+    @Test
     void rejectsNonsense() {
         SimClock c = new SimClock(0.1);
         assertThrows(IllegalArgumentException.class, () -> c.setSpeed(0));
