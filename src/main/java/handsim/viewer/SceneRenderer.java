@@ -21,8 +21,11 @@ import java.util.List;
  */
 public final class SceneRenderer implements AutoCloseable {
 
-    /** Mesh detail: slices around, stacks per hemisphere; shadows need less. */
-    static final int SLICES = 20, HEMI_STACKS = 6, SHADOW_SLICES = 10, SHADOW_HEMI_STACKS = 3;
+    /** Mesh detail: slices around, stacks per hemisphere; finger-sized shapes and shadows need less. */
+    static final int SLICES = 20, HEMI_STACKS = 6, SMALL_SLICES = 12, SMALL_HEMI_STACKS = 4, SHADOW_SLICES = 10,
+            SHADOW_HEMI_STACKS = 3;
+    /** Round shapes thinner than this radius (m: the fingers) get the smaller mesh: a few pixels wide on screen. */
+    static final double SMALL_RADIUS = 0.015;
     static final double SHADOW_LIFT = 5e-4, GOAL_OUTLINE_WIDTH = 2;
     private static final String PALM_BODY = "palm";
 
@@ -31,6 +34,7 @@ public final class SceneRenderer implements AutoCloseable {
     private final ViewerConfig.Overlays overlays;
     private final double planeHalfSize;
     private final Mesh fine;
+    private final Mesh small;
     private final Mesh coarse;
     private final int floorList;
     private double floorHeight = Double.NaN;
@@ -71,6 +75,7 @@ public final class SceneRenderer implements AutoCloseable {
         this.overlays = config.overlays();
         this.planeHalfSize = config.goals().planeHalfSize();
         fine = Mesh.build(SLICES, HEMI_STACKS);
+        small = Mesh.build(SMALL_SLICES, SMALL_HEMI_STACKS);
         coarse = Mesh.build(SHADOW_SLICES, SHADOW_HEMI_STACKS);
         floorList = glGenLists(1);
     }
@@ -103,10 +108,16 @@ public final class SceneRenderer implements AutoCloseable {
         glMaterialf(GL_FRONT, GL_SHININESS, 24);
     }
 
-    /** Floor, shadows, arm and hand, the object and static boxes (the opaque parts). */
+    /**
+     * Floor, shadows, arm and hand, the object and static boxes (the opaque parts). Floor and
+     * shadows lie under everything else and are drawn first without the depth buffer, which
+     * saves a depth test and write on half the screen.
+     */
     public void drawWorld(WorldSnapshot s) {
+        glDisable(GL_DEPTH_TEST);
         drawFloor(s.groundHeight());
         drawShadows(s);
+        glEnable(GL_DEPTH_TEST);
         glEnable(GL_LIGHTING);
         List<Body> bodies = s.model().bodies();
         for (int i = 0; i < bodies.size(); i++) {
@@ -232,7 +243,8 @@ public final class SceneRenderer implements AutoCloseable {
         glPopMatrix();
     }
 
-    private void drawShape(Shape shape, Mesh mesh) {
+    private void drawShape(Shape shape, Mesh detail) {
+        Mesh mesh = detail == fine && radius(shape) < SMALL_RADIUS ? small : detail;
         if (shape instanceof Shape.Sphere sp) {
             drawScaled(sp.center(), Quat.IDENTITY, sp.radius(), sp.radius(), sp.radius(), mesh.sphere);
         } else if (shape instanceof Shape.Box b) {
@@ -249,6 +261,18 @@ public final class SceneRenderer implements AutoCloseable {
             drawScaled(c.a(), along, r, r, r, mesh.hemisphere);
             drawScaled(c.b(), along.mul(Quat.fromAxisAngle(Vec3.X, Math.PI)), r, r, r, mesh.hemisphere);
         }
+    }
+
+    /** The radius of a round shape; boxes count as large. */
+    private static double radius(Shape shape) {
+        if (shape instanceof Shape.Sphere sp) {
+            return sp.radius();
+        } else if (shape instanceof Shape.Capsule c) {
+            return c.radius();
+        } else if (shape instanceof Shape.Cylinder c) {
+            return c.radius();
+        }
+        return Double.POSITIVE_INFINITY;
     }
 
     private void drawScaled(Vec3 at, Quat rotation, double sx, double sy, double sz, int list) {
@@ -273,7 +297,6 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xff);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        glDepthMask(false);
         glPushMatrix();
         glMultMatrixf(m);
         color(colours.shadow());
@@ -289,7 +312,6 @@ public final class SceneRenderer implements AutoCloseable {
             drawScaled(b.center(), Quat.IDENTITY, b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, coarse.cube);
         }
         glPopMatrix();
-        glDepthMask(true);
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_BLEND);
         glEnable(GL_CULL_FACE);
@@ -399,6 +421,7 @@ public final class SceneRenderer implements AutoCloseable {
     @Override
     public void close() {
         fine.delete();
+        small.delete();
         coarse.delete();
         glDeleteLists(floorList, 1);
     }
