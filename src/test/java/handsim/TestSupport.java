@@ -10,6 +10,7 @@ import handsim.model.HandModel;
 import handsim.model.ModelLoader;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
+import handsim.viewer.ViewerConfig;
 import java.util.SplittableRandom;
 
 /** Shared loading of the project's model and configs, and tolerance helpers, for tests. */
@@ -33,6 +34,11 @@ public final class TestSupport {
 
     public static PdController pd(HandModel m) {
         return new PdController(m, PdGains.parse(Json.load(Home.resolve("configs/controller.json")).get("pd")));
+    }
+
+    /** The shipped drawing and viewer settings ({@code configs/viewer.json}). */
+    public static ViewerConfig viewerConfig() {
+        return ViewerConfig.load(Home.resolve("configs/viewer.json"));
     }
 
     public static ObjectSpec object(String name) {

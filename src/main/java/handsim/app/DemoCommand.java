@@ -9,6 +9,7 @@ import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
 import handsim.task.LoopRecord;
+import handsim.task.SceneSetup;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
@@ -26,8 +27,8 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
         description = "The main job: the hand catches and throws a sphere to a new random height every loop. "
-                + "Opens the viewer when there is a display; otherwise runs --loops throws headless and writes "
-                + "summary.json, loops.csv and apex.png to a run folder.")
+                + "Opens the viewer when there is a display (Esc quits); otherwise (or with --headless) runs --loops throws "
+                + "headless and writes summary.json, loops.csv and apex.png to a run folder.")
 final class DemoCommand implements Callable<Integer> {
 
     @Option(names = "--loops", defaultValue = "20", description = "throws to make when headless (default: ${DEFAULT-VALUE})")
@@ -49,15 +50,19 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--headless", description = "run headless even when a display is available")
     boolean headless;
 
+    /** The best controller handsim ships for the sphere (the learned one once a trained policy ships). */
+    static final String BEST_CONTROLLER = "nominal";
+
     @Override
     public Integer call() throws Exception {
         if (loops < 1 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [1, 100000], got " + loops);
         }
         HeightGoals goals = parseHeights(heights);
-        if (!headless && System.getenv("DISPLAY") != null) {
-            System.out.println("handsim demo: the interactive viewer is not built yet; running headless");
-        } else if (!headless) {
+        if (!headless && ViewerSession.hasDisplay()) {
+            return ViewerSession.open("demo", new SceneSetup("height", object, BEST_CONTROLLER, seed), goals, null, 0, null);
+        }
+        if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
         CatchEvaluation evaluation = Runtime.nominalEvaluation(object, goals);
@@ -138,7 +143,8 @@ final class DemoCommand implements Callable<Integer> {
         System.out.println("wrote " + dir.resolve("summary.json") + ", loops.csv, apex.png");
     }
 
-    private static HeightGoals parseHeights(String text) {
+    /** {@code LOW:HIGH} in metres, for {@code --heights}. */
+    static HeightGoals parseHeights(String text) {
         String[] parts = text.split(":");
         try {
             if (parts.length == 2) {

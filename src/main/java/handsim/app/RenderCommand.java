@@ -7,11 +7,16 @@ import handsim.task.CatchEvaluation;
 import handsim.task.CatchLoopScene;
 import handsim.task.HeldBallScenario;
 import handsim.task.HeldBallScene;
+import handsim.task.Goal;
+import handsim.task.HeightControl;
 import handsim.task.HeightGoals;
+import handsim.task.InteractiveScene;
 import handsim.task.Scene;
 import handsim.task.ServoLoop;
 import handsim.viewer.Camera;
+import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;
+import handsim.viewer.ViewerConfig;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -19,8 +24,9 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code handsim render}: a headless run written as numbered PNG frames ({@code 00000.png}, ...),
- * from a fixed camera. Without {@code --controller} the foundation's held-ball scene; with it,
- * the controller's catch-and-throw loop.
+ * from the home camera of {@code configs/viewer.json}, drawn by the viewer's renderer. Without
+ * {@code --controller} the foundation's held-ball scene; with it, the controller's
+ * catch-and-throw loop and its goal plane.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Write a headless run as PNG frames DIR/00000.png, 00001.png, ... (make a video with "
@@ -66,11 +72,15 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--controller must be nominal, got " + controller);
         }
         int frames = (int) Math.round(seconds * fps);
-        try (Scene scene = scene(); OffscreenRenderer renderer = new OffscreenRenderer(width, height)) {
-            Camera camera = new Camera();
+        ViewerConfig config = ViewerSession.config();
+        try (Scene scene = scene(config); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);
+                FrameFolder folder = new FrameFolder(out)) {
+            Camera camera = new Camera(config.camera());
             long t0 = System.nanoTime();
             for (int f = 0; f < frames; f++) {
-                OffscreenRenderer.writePng(renderer.render(scene.snapshot(), camera, null), out.resolve(String.format("%05d.png", f)));
+                Goal goal = scene instanceof InteractiveScene s ? s.goal() : new Goal.None();
+                var image = renderer.render(scene.snapshot(), camera, r -> r.drawGoal(goal));
+                folder.add(() -> image);
                 if (f % Math.max(1, fps / 2) == 0 || f == frames - 1) {
                     System.out.printf("frame %d/%d  t=%.2f s  %s%n", f + 1, frames, scene.time(), scene.status());
                 }
@@ -81,7 +91,7 @@ final class RenderCommand implements Callable<Integer> {
         return 0;
     }
 
-    private Scene scene() {
+    private Scene scene(ViewerConfig viewerConfig) {
         HandModel model = Runtime.model(null);
         SimConfig config = Runtime.simConfig();
         Simulator sim = Runtime.simulator(model, config);
@@ -89,6 +99,7 @@ final class RenderCommand implements Callable<Integer> {
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
         CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
-        return new CatchLoopScene(sim, evaluation, seed);
+        ViewerConfig.Goals g = viewerConfig.goals();
+        return new CatchLoopScene(sim, evaluation, seed, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()));
     }
 }

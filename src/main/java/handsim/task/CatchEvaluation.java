@@ -48,6 +48,16 @@ public final class CatchEvaluation {
                 new NominalThrowPolicy(controllerConfig.nominalThrows(), goals::current), goals);
     }
 
+    /** The goal heights the throws aim at (shared by every episode this evaluation starts). */
+    public HeightGoals goals() {
+        return goals;
+    }
+
+    /** The object thrown, before a seed varies it within its tolerance. */
+    public ObjectSpec object() {
+        return object;
+    }
+
     /** Runs the episode of {@code seed} on {@code sim} (which it resets). */
     public EpisodeResult run(Simulator sim, long seed, int maxLoops, LoopListener listener) {
         CatchThrowEpisode episode = start(sim, seed);

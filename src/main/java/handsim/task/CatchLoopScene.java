@@ -1,29 +1,44 @@
 package handsim.task;
 
+import handsim.control.Phase;
+import handsim.kin.Kinematics;
+import handsim.math.Vec3;
+import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
 
 /**
- * Endless catch-and-throw for watching: runs the episodes of a {@link CatchEvaluation} one after
- * another. When an episode ends (a drop or a time limit) the world is reset and the next seed's
- * object is thrown in; the status says so, and the loop count starts again from zero.
+ * The height task for watching: endless catch-and-throw, running the episodes of a {@link
+ * CatchEvaluation} one after another. When an episode ends (a drop, a time limit, or a diverged
+ * simulation) the world is reset and the next seed's object is thrown in; the status says so.
+ * The goal heights can be raised and lowered while it runs.
  */
-public final class CatchLoopScene implements Scene {
+public final class CatchLoopScene implements InteractiveScene {
 
     private final Simulator sim;
     private final CatchEvaluation evaluation;
+    private final HeightControl heightControl;
+    private final Vec3 planeCenter;
     private CatchThrowEpisode episode;
     private long seed;
-    private int episodes;
+    private int episodes = 1;
+    private int catchesInARow;
+    private int bestInARow;
+    private LoopRecord lastThrow;
     private String lastEvent = "thrown in";
 
     /** Owns {@code sim} (closed with the scene) and starts the episode of {@code seed}. */
-    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed) {
+    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl) {
         this.sim = sim;
         this.evaluation = evaluation;
+        this.heightControl = heightControl;
         this.seed = seed;
+        // the goal plane is drawn around the palm's neutral position
+        this.planeCenter = new Kinematics(sim.model()).siteFrame(sim.model().site("palm_center"),
+                sim.model().poseVector("neutral")).origin();
         this.episode = evaluation.start(sim, seed);
     }
 
@@ -32,17 +47,93 @@ public final class CatchLoopScene implements Scene {
         double until = sim.time() + seconds;
         while (sim.time() < until - 1e-12) {
             if (episode.status() != CatchThrowEpisode.Status.RUNNING) {
-                lastEvent = episode.status() == CatchThrowEpisode.Status.DROPPED ? "dropped: new throw" : "time limit: new throw";
-                episodes++;
-                seed++;
-                episode = evaluation.start(sim, seed);
+                restart(episode.status() == CatchThrowEpisode.Status.DROPPED ? "dropped: new throw" : "time limit: new throw");
                 return;
             }
-            LoopRecord r = episode.tick();
+            LoopRecord r;
+            try {
+                r = episode.tick();
+            } catch (SimulationDiverged e) {
+                restart("simulation diverged (" + e.getMessage() + "): new throw");
+                return;
+            }
             if (r != null) {
-                lastEvent = r.caught() ? (r.index() == 0 ? "caught" : String.format("caught, apex %.2f m", r.apexHeight())) : "dropped";
+                record(r);
             }
         }
+    }
+
+    private void record(LoopRecord r) {
+        if (r.caught()) {
+            catchesInARow++;
+            bestInARow = Math.max(bestInARow, catchesInARow);
+        } else {
+            catchesInARow = 0;
+        }
+        if (r.index() > 0) {
+            lastThrow = r;
+        }
+        lastEvent = r.caught() ? (r.index() == 0 ? "caught the throw-in" : "caught") : "dropped";
+    }
+
+    /** Ends the episode and throws the next seed's object in. */
+    private void restart(String event) {
+        lastEvent = event;
+        catchesInARow = 0;
+        episodes++;
+        seed++;
+        episode = evaluation.start(sim, seed);
+    }
+
+    @Override
+    public String apply(SceneCommand command) {
+        HeightGoals goals = evaluation.goals();
+        switch (command) {
+            case RESET -> {
+                episode = evaluation.start(sim, seed);
+                catchesInARow = 0;
+                lastEvent = "reset";
+                return "reset: episode of seed " + seed + " from the start";
+            }
+            case NEW_THROW -> {
+                restart("new throw");
+                return "new throw: episode of seed " + seed;
+            }
+            case GOAL_UP, GOAL_DOWN -> {
+                boolean up = command == SceneCommand.GOAL_UP;
+                double dy = up ? Math.min(heightControl.step(), heightControl.max() - goals.high())
+                        : Math.max(-heightControl.step(), heightControl.min() - goals.low());
+                if (up ? dy < 1e-9 : dy > -1e-9) {
+                    return String.format(Locale.ROOT, "height goals already at their %s bound (%.2f-%.2f m allowed)",
+                            up ? "upper" : "lower", heightControl.min(), heightControl.max());
+                }
+                goals.shift(dy);
+                return String.format(Locale.ROOT, "next throws aim at %s", goalRange(goals));
+            }
+            case GOAL_LEFT, GOAL_RIGHT, GOAL_NEARER, GOAL_FARTHER -> {
+                return "the height task has no box to move (raise or lower the height goal instead)";
+            }
+            default -> {
+                return command + " is not something this scene can do";
+            }
+        }
+    }
+
+    private static String goalRange(HeightGoals goals) {
+        return goals.high() > goals.low()
+                ? String.format(Locale.ROOT, "%.2f-%.2f m (now %.2f m)", goals.low(), goals.high(), goals.current())
+                : String.format(Locale.ROOT, "%.2f m", goals.current());
+    }
+
+    /**
+     * The throw in the air aims at the episode's current throw goal; while the object rests in
+     * the hand (MIDDLE) and before the first throw, the goal shown is the next throw's.
+     */
+    @Override
+    public Goal goal() {
+        double inFlight = episode.throwGoal();
+        boolean upcoming = Double.isNaN(inFlight) || episode.state().phase() == Phase.MIDDLE;
+        return new Goal.Height(upcoming ? evaluation.goals().current() : inFlight, planeCenter);
     }
 
     @Override
@@ -64,11 +155,17 @@ public final class CatchLoopScene implements Scene {
     public Map<String, String> status() {
         Map<String, String> s = new LinkedHashMap<>();
         s.put("state", episode.state().phase().name());
-        s.put("loops", Integer.toString(Math.max(0, episode.result(seed).loopsCompleted())));
+        // loop 0 catches the throw-in, loop k >= 1 is the k-th throw and its catch
+        s.put("loop", Integer.toString(episode.loops().size()));
+        s.put("catches in a row", catchesInARow + " (best " + bestInARow + ")");
+        s.put("last apex", lastThrow == null ? "-" : String.format(Locale.ROOT, "%.3f m (goal %.3f, %+.3f)",
+                lastThrow.apexHeight(), lastThrow.targetHeight(), lastThrow.apexHeight() - lastThrow.targetHeight()));
+        double shown = ((Goal.Height) goal()).height(), next = evaluation.goals().current();
+        s.put("goal", Math.abs(shown - next) > 5e-4 ? String.format(Locale.ROOT, "%.3f m (next %.3f m)", shown, next)
+                : String.format(Locale.ROOT, "%.3f m", shown));
         s.put("last", lastEvent);
-        s.put("seed", Long.toString(seed));
-        s.put("episodes", Integer.toString(episodes));
-        s.put("t", String.format("%.2f s", sim.time()));
+        s.put("episode", "seed " + seed + " (" + episodes + " so far)");
+        s.put("t", String.format(Locale.ROOT, "%.2f s", sim.time()));
         return s;
     }
 

@@ -92,6 +92,11 @@ public final class CatchThrowEpisode {
         return status;
     }
 
+    /** The apex height the throw now in progress aims at (m; NaN before the first throw). */
+    public double throwGoal() {
+        return loopGoal;
+    }
+
     /** Finished loops, in order. */
     public List<LoopRecord> loops() {
         return loops;

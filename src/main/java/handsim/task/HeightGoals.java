@@ -5,12 +5,13 @@ import java.util.SplittableRandom;
 /**
  * The desired apex height of each throw: fixed, or drawn uniformly from [low, high] for every
  * throw from the episode's seed. The policy reads {@link #current()}; the episode moves on to
- * the next goal once a throw has been made.
+ * the next goal once a throw has been made. A person watching may {@link #shift} the goals up or
+ * down while the episode runs.
  */
 public final class HeightGoals {
 
-    private final double low;
-    private final double high;
+    private double low;
+    private double high;
     private SplittableRandom rng = new SplittableRandom(0);
     private double current;
 
@@ -37,6 +38,16 @@ public final class HeightGoals {
     /** The goal of the next (or current) throw (m, world). */
     public double current() {
         return current;
+    }
+
+    /** Moves the range and the current goal by {@code dy} metres; the range stays above 0. */
+    public void shift(double dy) {
+        if (!(low + dy > 0)) {
+            throw new IllegalArgumentException("height goals must stay above 0 m, got a shift of " + dy + " from " + low);
+        }
+        low += dy;
+        high += dy;
+        current += dy;
     }
 
     void advance() {

@@ -4,32 +4,63 @@ import handsim.math.Vec3;
 
 /**
  * An orbit camera: it looks at {@code target} from {@code distance} metres, turned by
- * {@code yaw} about the world's up axis (y) and raised by {@code pitch}. Matrices are
- * column-major float[16], as OpenGL takes them. Pure maths, no OpenGL: tests use it to predict
- * where a world point lands on the image.
+ * {@code yaw} about the world's up axis (y) and raised by {@code pitch}. The mouse orbits, pans
+ * and zooms it; {@link #reset()} returns to the home framing of {@code configs/viewer.json}.
+ * Matrices are column-major float[16], as OpenGL takes them. Pure maths, no OpenGL: tests use it
+ * to predict where a world point lands on the image.
  */
 public final class Camera {
 
-    /** Default framing: arm, hand and the object's flight, seen from the front-right and above. */
-    public static final Vec3 DEFAULT_TARGET = new Vec3(0.05, 0.85, 0.25);
-    public static final double DEFAULT_YAW = Math.toRadians(40);
-    public static final double DEFAULT_PITCH = Math.toRadians(10);
-    public static final double DEFAULT_DISTANCE = 1.55;
-    public static final double DEFAULT_FOV_Y = Math.toRadians(45);
     static final double NEAR = 0.05, FAR = 30;
+    /** Pitch stays short of straight up or down, where the look-at frame is undefined. */
+    static final double MAX_PITCH = Math.toRadians(89);
 
-    public Vec3 target = DEFAULT_TARGET;
-    public double yaw = DEFAULT_YAW;
-    public double pitch = DEFAULT_PITCH;
-    public double distance = DEFAULT_DISTANCE;
-    public double fovY = DEFAULT_FOV_Y;
+    private final ViewerConfig.CameraHome home;
+    public Vec3 target;
+    public double yaw;
+    public double pitch;
+    public double distance;
+    public double fovY;
 
-    /** Back to the default framing. */
+    public Camera(ViewerConfig.CameraHome home) {
+        this.home = home;
+        reset();
+    }
+
+    /** Back to the home framing. */
     public void reset() {
-        target = DEFAULT_TARGET;
-        yaw = DEFAULT_YAW;
-        pitch = DEFAULT_PITCH;
-        distance = DEFAULT_DISTANCE;
+        target = home.target();
+        yaw = home.yaw();
+        pitch = home.pitch();
+        distance = home.distance();
+        fovY = home.fovY();
+    }
+
+    /** Turns the camera around its target by a mouse drag of (dx, dy) pixels (drag right: the scene turns right). */
+    public void orbit(double dx, double dy) {
+        yaw -= dx * home.orbitPerPixel();
+        pitch = Math.max(-MAX_PITCH, Math.min(MAX_PITCH, pitch + dy * home.orbitPerPixel()));
+    }
+
+    /** Slides the target in the image plane by a drag of (dx, dy) pixels: the scene follows the mouse. */
+    public void pan(double dx, double dy) {
+        Vec3 forward = target.minus(eye()).normalized();
+        Vec3 right = forward.cross(Vec3.Y).normalized();
+        Vec3 up = right.cross(forward);
+        double k = distance * home.panPerPixel();
+        target = target.plus(right.times(-dx * k)).plus(up.times(dy * k));
+    }
+
+    /** Moves toward the target by {@code notches} scroll steps (negative: away), within the distance bounds. */
+    public void zoom(double notches) {
+        distance = Math.max(home.minDistance(), Math.min(home.maxDistance(),
+                distance * Math.pow(1 - home.zoomPerScroll(), notches)));
+    }
+
+    /** Eases the target toward {@code point} over {@code dt} seconds (exponential, at the configured rate). */
+    public void follow(Vec3 point, double dt) {
+        double a = 1 - Math.exp(-home.followRate() * Math.max(0, dt));
+        target = target.lerp(point, a);
     }
 
     /** The camera's position in the world. */

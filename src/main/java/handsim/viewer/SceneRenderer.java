@@ -8,43 +8,83 @@ import handsim.math.Vec3;
 import handsim.model.Body;
 import handsim.model.Shape;
 import handsim.sim.WorldSnapshot;
+import handsim.task.Goal;
 import java.util.List;
 
 /**
  * Draws a {@link WorldSnapshot} with OpenGL's fixed-function pipeline (cheap on Mesa's software
  * renderer): a checkered floor, planar shadows of every shape, shaded capsules, cylinders,
- * boxes and spheres for the arm, the hand, the object and static boxes, and translucent goals.
- * Needs a current OpenGL context; unit meshes are built once into display lists.
+ * boxes and spheres for the arm, the hand (the palm's collision shapes in their own tone), the
+ * object and static boxes; then, on request, the task's goal, the object's trail and the joint
+ * axes. Needs a current OpenGL context; unit meshes and the floor are built once into display
+ * lists, and shadows use coarser meshes than the bodies.
  */
 public final class SceneRenderer implements AutoCloseable {
 
-    public static final float[] SKIN = {0.87f, 0.70f, 0.58f, 1};
-    public static final float[] OBJECT = {1.0f, 0.42f, 0.08f, 1};
-    public static final float[] STATIC_BOX = {0.55f, 0.58f, 0.66f, 1};
-    public static final float[] GOAL_PLANE = {0.95f, 0.1f, 0.1f, 0.28f};
-    public static final float[] BACKGROUND = {0.93f, 0.95f, 0.98f, 1};
-    static final float[] FLOOR_LIGHT = {0.82f, 0.82f, 0.80f}, FLOOR_DARK = {0.72f, 0.72f, 0.70f};
-    static final double FLOOR_HALF_SIZE = 3, FLOOR_TILE = 0.25;
-    static final float SHADOW_ALPHA = 0.35f;
-    /** Direction the light travels (down, from the front-right). */
-    static final Vec3 LIGHT = new Vec3(-0.35, -1, -0.45).normalized();
-    static final int SLICES = 20, STACKS = 12;
+    /** Mesh detail: slices around, stacks per hemisphere; finger-sized shapes and shadows need less. */
+    static final int SLICES = 20, HEMI_STACKS = 6, SMALL_SLICES = 12, SMALL_HEMI_STACKS = 4, SHADOW_SLICES = 10,
+            SHADOW_HEMI_STACKS = 3;
+    /** Round shapes thinner than this radius (m: the fingers) get the smaller mesh: a few pixels wide on screen. */
+    static final double SMALL_RADIUS = 0.015;
+    static final double SHADOW_LIFT = 5e-4, GOAL_OUTLINE_WIDTH = 2;
+    private static final String PALM_BODY = "palm";
 
-    private final int sphereList, cylinderList, cubeList;
+    private final ViewerConfig.Palette colours;
+    private final ViewerConfig.Stage stage;
+    private final ViewerConfig.Overlays overlays;
+    private final double planeHalfSize;
+    private final Mesh fine;
+    private final Mesh small;
+    private final Mesh coarse;
+    private final int floorList;
+    private double floorHeight = Double.NaN;
+    private JointAxes axes;
 
-    public SceneRenderer() {
-        sphereList = glGenLists(3);
-        cylinderList = sphereList + 1;
-        cubeList = sphereList + 2;
-        buildSphere();
-        buildCylinder();
-        buildCube();
+    /** Unit meshes of one level of detail, each a display list. */
+    private record Mesh(int sphere, int hemisphere, int tube, int cylinder, int cube) {
+        static Mesh build(int slices, int hemiStacks) {
+            int base = glGenLists(5);
+            Mesh m = new Mesh(base, base + 1, base + 2, base + 3, base + 4);
+            glNewList(m.sphere, GL_COMPILE);
+            buildSphereBand(slices, -hemiStacks, hemiStacks, hemiStacks);
+            glEndList();
+            glNewList(m.hemisphere, GL_COMPILE);
+            buildSphereBand(slices, -hemiStacks, 0, hemiStacks);
+            glEndList();
+            glNewList(m.tube, GL_COMPILE);
+            buildTube(slices);
+            glEndList();
+            glNewList(m.cylinder, GL_COMPILE);
+            buildTube(slices);
+            buildCaps(slices);
+            glEndList();
+            glNewList(m.cube, GL_COMPILE);
+            buildCube();
+            glEndList();
+            return m;
+        }
+
+        void delete() {
+            glDeleteLists(sphere, 5);
+        }
+    }
+
+    public SceneRenderer(ViewerConfig config) {
+        this.colours = config.colours();
+        this.stage = config.stage();
+        this.overlays = config.overlays();
+        this.planeHalfSize = config.goals().planeHalfSize();
+        fine = Mesh.build(SLICES, HEMI_STACKS);
+        small = Mesh.build(SMALL_SLICES, SMALL_HEMI_STACKS);
+        coarse = Mesh.build(SHADOW_SLICES, SHADOW_HEMI_STACKS);
+        floorList = glGenLists(1);
     }
 
     /** Clears the frame and sets camera, light and state for an image of {@code width} x {@code height}. */
     public void begin(Camera camera, int width, int height) {
+        float[] bg = colours.background();
         glViewport(0, 0, width, height);
-        glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1);
+        glClearColor(bg[0], bg[1], bg[2], 1);
         glClearStencil(0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         glMatrixMode(GL_PROJECTION);
@@ -57,7 +97,8 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_NORMALIZE);
         glShadeModel(GL_SMOOTH);
         glEnable(GL_LIGHT0);
-        glLightfv(GL_LIGHT0, GL_POSITION, new float[] {(float) -LIGHT.x(), (float) -LIGHT.y(), (float) -LIGHT.z(), 0});
+        Vec3 light = stage.light();
+        glLightfv(GL_LIGHT0, GL_POSITION, new float[] {(float) -light.x(), (float) -light.y(), (float) -light.z(), 0});
         glLightfv(GL_LIGHT0, GL_DIFFUSE, new float[] {0.75f, 0.75f, 0.72f, 1});
         glLightfv(GL_LIGHT0, GL_SPECULAR, new float[] {0.25f, 0.25f, 0.25f, 1});
         glLightModelfv(GL_LIGHT_MODEL_AMBIENT, new float[] {0.38f, 0.38f, 0.42f, 1});
@@ -67,20 +108,43 @@ public final class SceneRenderer implements AutoCloseable {
         glMaterialf(GL_FRONT, GL_SHININESS, 24);
     }
 
-    /** Floor, shadows, arm and hand, the object and static boxes (opaque parts first). */
+    /**
+     * Floor, shadows, arm and hand, the object and static boxes (the opaque parts). Floor and
+     * shadows lie under everything else and are drawn first without the depth buffer, which
+     * saves a depth test and write on half the screen.
+     */
     public void drawWorld(WorldSnapshot s) {
+        glDisable(GL_DEPTH_TEST);
         drawFloor(s.groundHeight());
         drawShadows(s);
+        glEnable(GL_DEPTH_TEST);
         glEnable(GL_LIGHTING);
-        drawBodies(s, SKIN);
-        drawObject(s);
+        List<Body> bodies = s.model().bodies();
+        for (int i = 0; i < bodies.size(); i++) {
+            color(bodies.get(i).name().equals(PALM_BODY) ? colours.palm() : colours.skin());
+            drawShapes(s.bodies().get(i), bodies.get(i).shapes(), fine);
+        }
+        if (s.object().isPresent() && s.objectSpec().isPresent()) {
+            color(colours.object());
+            var o = s.object().get();
+            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes(), fine);
+        }
         for (WorldSnapshot.StaticBox b : s.boxes()) {
-            drawBox(b.center(), b.size(), STATIC_BOX);
+            drawBox(b.center(), b.size(), colours.staticBox(), fine);
         }
     }
 
-    /** A translucent horizontal square at {@code height}, centred above {@code center}: the height goal. */
-    public void drawGoalPlane(double height, Vec3 center, double halfSize, float[] rgba) {
+    /** The task's goal: a translucent plane with a solid rim for a height, a translucent box for a box. */
+    public void drawGoal(Goal goal) {
+        if (goal instanceof Goal.Height h) {
+            drawGoalPlane(h.height(), h.center(), planeHalfSize, colours.goalPlane());
+        } else if (goal instanceof Goal.Box b) {
+            drawBox(b.center(), b.size(), colours.goalBox(), fine);
+        }
+    }
+
+    private void drawGoalPlane(double height, Vec3 center, double half, float[] rgba) {
+        double[][] corners = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
         glDisable(GL_LIGHTING);
         glDisable(GL_CULL_FACE);
         glEnable(GL_BLEND);
@@ -88,18 +152,65 @@ public final class SceneRenderer implements AutoCloseable {
         glDepthMask(false);
         glColor4f(rgba[0], rgba[1], rgba[2], rgba[3]);
         glBegin(GL_QUADS);
-        glVertex3d(center.x() - halfSize, height, center.z() - halfSize);
-        glVertex3d(center.x() + halfSize, height, center.z() - halfSize);
-        glVertex3d(center.x() + halfSize, height, center.z() + halfSize);
-        glVertex3d(center.x() - halfSize, height, center.z() + halfSize);
+        for (double[] c : corners) {
+            glVertex3d(center.x() + c[0], height, center.z() + c[1]);
+        }
+        glEnd();
+        glLineWidth((float) GOAL_OUTLINE_WIDTH);
+        glColor4f(rgba[0], rgba[1], rgba[2], Math.min(1, 3 * rgba[3]));
+        glBegin(GL_LINE_LOOP);
+        for (double[] c : corners) {
+            glVertex3d(center.x() + c[0], height, center.z() + c[1]);
+        }
         glEnd();
         glDepthMask(true);
         glDisable(GL_BLEND);
         glEnable(GL_CULL_FACE);
     }
 
+    /** The object's recent path as a line that fades with age; {@code now} is the snapshot's time. */
+    public void drawTrail(Trail trail, double now) {
+        if (trail.size() < 2) {
+            return;
+        }
+        float[] c = colours.trail();
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glLineWidth((float) overlays.trailWidthPixels());
+        glBegin(GL_LINE_STRIP);
+        for (int i = 0; i < trail.size(); i++) {
+            double age = Math.max(0, now - trail.time(i)) / trail.seconds();
+            glColor4f(c[0], c[1], c[2], (float) (c[3] * Math.max(0, 1 - age)));
+            Vec3 p = trail.position(i);
+            glVertex3d(p.x(), p.y(), p.z());
+        }
+        glEnd();
+        glDisable(GL_BLEND);
+    }
+
+    /** Every DOF's rotation axis as a short line from its joint, drawn over the bodies. */
+    public void drawJointAxes(WorldSnapshot s) {
+        if (axes == null || axes.model() != s.model()) {
+            axes = new JointAxes(s.model());
+        }
+        glDisable(GL_LIGHTING);
+        glDisable(GL_DEPTH_TEST);
+        glLineWidth((float) overlays.axisWidthPixels());
+        glBegin(GL_LINES);
+        for (JointAxes.Axis a : axes.compute(s)) {
+            float[] c = colours.axes().get(a.slot());
+            glColor4f(c[0], c[1], c[2], c[3]);
+            Vec3 from = a.anchor(), to = a.anchor().plus(a.direction().times(overlays.axisLength()));
+            glVertex3d(from.x(), from.y(), from.z());
+            glVertex3d(to.x(), to.y(), to.z());
+        }
+        glEnd();
+        glEnable(GL_DEPTH_TEST);
+    }
+
     /** An axis-aligned box (centre, full size); translucent if alpha < 1. */
-    public void drawBox(Vec3 center, Vec3 size, float[] rgba) {
+    private void drawBox(Vec3 center, Vec3 size, float[] rgba, Mesh mesh) {
         boolean translucent = rgba[3] < 1;
         glEnable(GL_LIGHTING);
         if (translucent) {
@@ -107,11 +218,11 @@ public final class SceneRenderer implements AutoCloseable {
             glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
             glDepthMask(false);
         }
-        glColor4f(rgba[0], rgba[1], rgba[2], rgba[3]);
+        color(rgba);
         glPushMatrix();
         glTranslated(center.x(), center.y(), center.z());
         glScaled(size.x() / 2, size.y() / 2, size.z() / 2);
-        glCallList(cubeList);
+        glCallList(mesh.cube);
         glPopMatrix();
         if (translucent) {
             glDepthMask(true);
@@ -119,51 +230,49 @@ public final class SceneRenderer implements AutoCloseable {
         }
     }
 
-    private void drawBodies(WorldSnapshot s, float[] color) {
-        glColor4f(color[0], color[1], color[2], color[3]);
-        List<Body> bodies = s.model().bodies();
-        for (int i = 0; i < bodies.size(); i++) {
-            drawShapes(s.bodies().get(i), bodies.get(i).shapes());
-        }
+    private static void color(float[] c) {
+        glColor4f(c[0], c[1], c[2], c[3]);
     }
 
-    private void drawObject(WorldSnapshot s) {
-        if (s.object().isPresent() && s.objectSpec().isPresent()) {
-            glColor4f(OBJECT[0], OBJECT[1], OBJECT[2], OBJECT[3]);
-            var o = s.object().get();
-            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes());
-        }
-    }
-
-    private void drawShapes(Frame frame, List<Shape> shapes) {
+    private void drawShapes(Frame frame, List<Shape> shapes, Mesh mesh) {
         glPushMatrix();
         multiply(frame.origin(), frame.rotation());
         for (Shape shape : shapes) {
-            drawShape(shape);
+            drawShape(shape, mesh);
         }
         glPopMatrix();
     }
 
-    private void drawShape(Shape shape) {
+    private void drawShape(Shape shape, Mesh detail) {
+        Mesh mesh = detail == fine && radius(shape) < SMALL_RADIUS ? small : detail;
         if (shape instanceof Shape.Sphere sp) {
-            drawScaled(sp.center(), Quat.IDENTITY, sp.radius(), sp.radius(), sp.radius(), sphereList);
+            drawScaled(sp.center(), Quat.IDENTITY, sp.radius(), sp.radius(), sp.radius(), mesh.sphere);
         } else if (shape instanceof Shape.Box b) {
-            drawScaled(b.center(), b.rotation(), b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, cubeList);
+            drawScaled(b.center(), b.rotation(), b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, mesh.cube);
         } else if (shape instanceof Shape.Cylinder c) {
-            drawSegment(c.a(), c.b(), c.radius(), false);
+            Vec3 d = c.b().minus(c.a());
+            drawScaled(c.a(), Quat.between(Vec3.Z, d.normalized()), c.radius(), c.radius(), d.norm(), mesh.cylinder);
         } else if (shape instanceof Shape.Capsule c) {
-            drawSegment(c.a(), c.b(), c.radius(), true);
+            // an open tube from a to b (unit mesh along +z) closed by two hemispheres facing outward
+            Vec3 d = c.b().minus(c.a());
+            Quat along = Quat.between(Vec3.Z, d.normalized());
+            double r = c.radius();
+            drawScaled(c.a(), along, r, r, d.norm(), mesh.tube);
+            drawScaled(c.a(), along, r, r, r, mesh.hemisphere);
+            drawScaled(c.b(), along.mul(Quat.fromAxisAngle(Vec3.X, Math.PI)), r, r, r, mesh.hemisphere);
         }
     }
 
-    /** A cylinder from a to b (unit mesh along +z), with hemispherical caps for a capsule. */
-    private void drawSegment(Vec3 a, Vec3 b, double r, boolean rounded) {
-        Vec3 d = b.minus(a);
-        drawScaled(a, Quat.between(Vec3.Z, d.normalized()), r, r, d.norm(), cylinderList);
-        if (rounded) {
-            drawScaled(a, Quat.IDENTITY, r, r, r, sphereList);
-            drawScaled(b, Quat.IDENTITY, r, r, r, sphereList);
+    /** The radius of a round shape; boxes count as large. */
+    private static double radius(Shape shape) {
+        if (shape instanceof Shape.Sphere sp) {
+            return sp.radius();
+        } else if (shape instanceof Shape.Capsule c) {
+            return c.radius();
+        } else if (shape instanceof Shape.Cylinder c) {
+            return c.radius();
         }
+        return Double.POSITIVE_INFINITY;
     }
 
     private void drawScaled(Vec3 at, Quat rotation, double sx, double sy, double sz, int list) {
@@ -176,8 +285,9 @@ public final class SceneRenderer implements AutoCloseable {
 
     /** Shadows projected along the light onto the floor, each pixel darkened once (stencil). */
     private void drawShadows(WorldSnapshot s) {
-        double h = s.groundHeight() + 5e-4;
-        double kx = LIGHT.x() / LIGHT.y(), kz = LIGHT.z() / LIGHT.y();
+        double h = s.groundHeight() + SHADOW_LIFT;
+        Vec3 light = stage.light();
+        double kx = light.x() / light.y(), kz = light.z() / light.y();
         // p' = p - L (p.y - h) / L.y, column-major
         float[] m = {1, 0, 0, 0, (float) -kx, 0, (float) -kz, 0, 0, 0, 1, 0, (float) (kx * h), (float) h, (float) (kz * h), 1};
         glDisable(GL_LIGHTING);
@@ -187,48 +297,53 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_EQUAL, 0, 0xff);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-        glDepthMask(false);
         glPushMatrix();
         glMultMatrixf(m);
+        color(colours.shadow());
         List<Body> bodies = s.model().bodies();
-        glColor4f(0, 0, 0, SHADOW_ALPHA);
         for (int i = 0; i < bodies.size(); i++) {
-            drawShapes(s.bodies().get(i), bodies.get(i).shapes());
+            drawShapes(s.bodies().get(i), bodies.get(i).shapes(), coarse);
         }
         if (s.object().isPresent() && s.objectSpec().isPresent()) {
             var o = s.object().get();
-            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes());
+            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes(), coarse);
         }
         for (WorldSnapshot.StaticBox b : s.boxes()) {
-            glPushMatrix();
-            glTranslated(b.center().x(), b.center().y(), b.center().z());
-            glScaled(b.size().x() / 2, b.size().y() / 2, b.size().z() / 2);
-            glCallList(cubeList);
-            glPopMatrix();
+            drawScaled(b.center(), Quat.IDENTITY, b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, coarse.cube);
         }
         glPopMatrix();
-        glDepthMask(true);
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_BLEND);
         glEnable(GL_CULL_FACE);
     }
 
     private void drawFloor(double y) {
+        if (y != floorHeight) {
+            buildFloor(y);
+        }
         glDisable(GL_LIGHTING);
+        glCallList(floorList);
+    }
+
+    private void buildFloor(double y) {
+        floorHeight = y;
+        double tile = stage.floorTile();
+        int n = (int) Math.round(stage.floorHalfSize() / tile);
+        glNewList(floorList, GL_COMPILE);
         glBegin(GL_QUADS);
-        int n = (int) Math.round(FLOOR_HALF_SIZE / FLOOR_TILE);
         for (int i = -n; i < n; i++) {
             for (int k = -n; k < n; k++) {
-                float[] c = ((i + k) & 1) == 0 ? FLOOR_LIGHT : FLOOR_DARK;
+                float[] c = ((i + k) & 1) == 0 ? colours.floorLight() : colours.floorDark();
                 glColor3f(c[0], c[1], c[2]);
-                double x0 = i * FLOOR_TILE, z0 = k * FLOOR_TILE;
+                double x0 = i * tile, z0 = k * tile;
                 glVertex3d(x0, y, z0);
-                glVertex3d(x0, y, z0 + FLOOR_TILE);
-                glVertex3d(x0 + FLOOR_TILE, y, z0 + FLOOR_TILE);
-                glVertex3d(x0 + FLOOR_TILE, y, z0);
+                glVertex3d(x0, y, z0 + tile);
+                glVertex3d(x0 + tile, y, z0 + tile);
+                glVertex3d(x0 + tile, y, z0);
             }
         }
         glEnd();
+        glEndList();
     }
 
     private static void multiply(Vec3 t, Quat q) {
@@ -240,13 +355,13 @@ public final class SceneRenderer implements AutoCloseable {
             t.x(), t.y(), t.z(), 1});
     }
 
-    private void buildSphere() {
-        glNewList(sphereList, GL_COMPILE);
-        for (int i = 0; i < STACKS; i++) {
-            double t0 = Math.PI * i / STACKS - Math.PI / 2, t1 = Math.PI * (i + 1) / STACKS - Math.PI / 2;
+    /** Latitude bands of the unit sphere from stack {@code from} to {@code to}, {@code perHemi} stacks per hemisphere (z up). */
+    private static void buildSphereBand(int slices, int from, int to, int perHemi) {
+        for (int i = from; i < to; i++) {
+            double t0 = Math.PI / 2 * i / perHemi, t1 = Math.PI / 2 * (i + 1) / perHemi;
             glBegin(GL_QUAD_STRIP);
-            for (int j = 0; j <= SLICES; j++) {
-                double p = 2 * Math.PI * j / SLICES;
+            for (int j = 0; j <= slices; j++) {
+                double p = 2 * Math.PI * j / slices;
                 for (double t : new double[] {t1, t0}) {
                     double nx = Math.cos(t) * Math.cos(p), ny = Math.cos(t) * Math.sin(p), nz = Math.sin(t);
                     glNormal3d(nx, ny, nz);
@@ -255,34 +370,34 @@ public final class SceneRenderer implements AutoCloseable {
             }
             glEnd();
         }
-        glEndList();
     }
 
-    private void buildCylinder() {
-        glNewList(cylinderList, GL_COMPILE);
+    /** The side of the unit cylinder from z = 0 to z = 1. */
+    private static void buildTube(int slices) {
         glBegin(GL_QUAD_STRIP);
-        for (int j = 0; j <= SLICES; j++) {
-            double p = 2 * Math.PI * j / SLICES, c = Math.cos(p), s = Math.sin(p);
+        for (int j = 0; j <= slices; j++) {
+            double p = 2 * Math.PI * j / slices, c = Math.cos(p), s = Math.sin(p);
             glNormal3d(c, s, 0);
             glVertex3d(c, s, 1);
             glVertex3d(c, s, 0);
         }
         glEnd();
+    }
+
+    private static void buildCaps(int slices) {
         for (int cap = 0; cap < 2; cap++) {
             glBegin(GL_TRIANGLE_FAN);
             glNormal3d(0, 0, cap == 0 ? -1 : 1);
             glVertex3d(0, 0, cap);
-            for (int j = 0; j <= SLICES; j++) {
-                double p = 2 * Math.PI * (cap == 0 ? j : SLICES - j) / SLICES;
+            for (int j = 0; j <= slices; j++) {
+                double p = 2 * Math.PI * (cap == 0 ? j : slices - j) / slices;
                 glVertex3d(Math.cos(p), Math.sin(p), cap);
             }
             glEnd();
         }
-        glEndList();
     }
 
-    private void buildCube() {
-        glNewList(cubeList, GL_COMPILE);
+    private static void buildCube() {
         glBegin(GL_QUADS);
         int[][] faces = {{0, 1}, {0, -1}, {1, 1}, {1, -1}, {2, 1}, {2, -1}};
         for (int[] f : faces) {
@@ -301,11 +416,13 @@ public final class SceneRenderer implements AutoCloseable {
             }
         }
         glEnd();
-        glEndList();
     }
 
     @Override
     public void close() {
-        glDeleteLists(sphereList, 3);
+        fine.delete();
+        small.delete();
+        coarse.delete();
+        glDeleteLists(floorList, 1);
     }
 }

@@ -38,12 +38,12 @@ class RenderSmokeTest {
         Simulator sim = new OdeSimulator(model, TestSupport.simConfig());
         try (HeldBallScene scene = new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, TestSupport.pd(model)),
                 TestSupport.object("sphere"), 0.2, 1));
-                OffscreenRenderer renderer = new OffscreenRenderer(WIDTH, HEIGHT)) {
+                OffscreenRenderer renderer = new OffscreenRenderer(WIDTH, HEIGHT, TestSupport.viewerConfig())) {
             scene.advance(0.15); // the ball in flight, above the hand: nothing hides it
             WorldSnapshot snap = scene.snapshot();
-            Camera camera = new Camera();
+            Camera camera = new Camera(TestSupport.viewerConfig().camera());
             Path file = dir.resolve("00000.png");
-            OffscreenRenderer.writePng(renderer.render(snap, camera, null), file);
+            FrameFolder.writePng(renderer.render(snap, camera, null), file);
 
             assertTrue(Files.size(file) > 1000, "a PNG was written");
             BufferedImage img = ImageIO.read(file.toFile());
@@ -61,7 +61,7 @@ class RenderSmokeTest {
             double[] px = camera.project(ball, WIDTH, HEIGHT);
             int rgb = img.getRGB((int) Math.round(px[0]), (int) Math.round(px[1]));
             int r = rgb >> 16 & 0xff, g = rgb >> 8 & 0xff, b = rgb & 0xff;
-            float[] want = SceneRenderer.OBJECT;
+            float[] want = TestSupport.viewerConfig().colours().object();
             assertTrue(Math.abs(r - 255 * want[0]) < COLOUR_TOLERANCE && Math.abs(g - 255 * want[1]) < COLOUR_TOLERANCE
                     && Math.abs(b - 255 * want[2]) < COLOUR_TOLERANCE && r > g && g > b,
                     String.format("object colour at its projected centre (%.0f, %.0f), got rgb(%d, %d, %d)", px[0], px[1], r, g, b));

@@ -1,0 +1,55 @@
+package handsim.app;
+
+import handsim.task.HeightGoals;
+import handsim.task.SceneSetup;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim view}: the interactive viewer. The scene is simulated at h = 0.2 ms in real
+ * time on its own thread; the window draws it with a heads-up display (H lists the keys).
+ */
+@Command(name = "view", mixinStandardHelpOptions = true,
+        description = "Watch the hand catch and throw in a window, in real time; change the goal, the object, the task "
+                + "and the controller with keys (H lists them). Needs an X display.")
+final class ViewCommand implements Callable<Integer> {
+
+    @Option(names = "--task", defaultValue = "height", description = "height, box or flip (default: ${DEFAULT-VALUE}; "
+            + "tasks not built yet fall back to height, with a note)")
+    String task;
+
+    @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (default: ${DEFAULT-VALUE})")
+    String object;
+
+    @Option(names = "--controller", defaultValue = "nominal", description = "nominal or learned (default: ${DEFAULT-VALUE}; "
+            + "learned without a usable --policy falls back to nominal, with a note)")
+    String controller;
+
+    @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file")
+    Path policy;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode (default: ${DEFAULT-VALUE})")
+    long seed;
+
+    @Option(names = "--heights", paramLabel = "LOW:HIGH", defaultValue = "1.1:1.3",
+            description = "range of the random apex goals, m (default: ${DEFAULT-VALUE}); Up / Down move it")
+    String heights;
+
+    @Option(names = "--benchmark-frames", paramLabel = "N", defaultValue = "0",
+            description = "draw N frames as fast as possible (no vsync), print the mean FPS and real-time factor, exit")
+    int benchmarkFrames;
+
+    @Option(names = "--screenshot", paramLabel = "FILE", description = "write the last frame drawn to FILE (PNG) on exit")
+    Path screenshot;
+
+    @Override
+    public Integer call() {
+        if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
+            throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
+        }
+        HeightGoals goals = DemoCommand.parseHeights(heights);
+        return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, benchmarkFrames, screenshot);
+    }
+}

@@ -1,0 +1,77 @@
+package handsim.app;
+
+import handsim.config.Home;
+import handsim.live.LiveRun;
+import handsim.live.SimClock;
+import handsim.task.HeightControl;
+import handsim.task.HeightGoals;
+import handsim.task.SceneSetup;
+import handsim.task.SwitchingScene;
+import handsim.viewer.Viewer;
+import handsim.viewer.ViewerConfig;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * Opens the interactive viewer on a scene of {@link ShippedScenes}: {@code view} and
+ * {@code demo} (with a display) both come here. The scene runs on a {@link LiveRun} thread;
+ * the viewer draws on this one.
+ */
+final class ViewerSession {
+
+    private ViewerSession() {
+    }
+
+    static ViewerConfig config() {
+        return ViewerConfig.load(Home.resolve("configs/viewer.json"));
+    }
+
+    /** True when an X display is set (GLFW needs one). */
+    static boolean hasDisplay() {
+        String d = System.getenv("DISPLAY");
+        return d != null && !d.isBlank();
+    }
+
+    /**
+     * Shows {@code wanted} until the window closes, or for {@code benchmarkFrames} frames drawn
+     * as fast as possible (then prints the mean frame rate and real-time factor); writes a
+     * screenshot of the last frame to {@code screenshot} if given.
+     */
+    static int open(String command, SceneSetup wanted, HeightGoals goals, Path policy, int benchmarkFrames, Path screenshot) {
+        if (!hasDisplay()) {
+            throw new IllegalArgumentException("no X display (DISPLAY is not set): the viewer needs one "
+                    + "(scripts/handsim demo runs headless; view --benchmark-frames N runs under xvfb-run)");
+        }
+        ViewerConfig config = config();
+        ViewerConfig.Goals g = config.goals();
+        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
+        catalog.validate(wanted);
+        String prefix = "handsim " + command + ": ";
+        SwitchingScene scene = new SwitchingScene(catalog, wanted);
+        scene.openingNotes().forEach(n -> System.out.println(prefix + n));
+        ViewerConfig.Pacing p = config.pacing();
+        SceneSetup shown = scene.shown();
+        String title = "handsim — " + shown.task() + " task, " + shown.object() + ", " + shown.controller() + " controller";
+        try (LiveRun run = new LiveRun(scene, new SimClock(p.maxLagSeconds()), p.minChunkSeconds(), p.maxChunkSeconds(),
+                    n -> System.out.println(prefix + n));
+                Viewer viewer = new Viewer(config, run, Home.resolve(config.recording().folder()), title,
+                    config.window().vsync() && benchmarkFrames == 0)) {
+            run.start();
+            System.out.println(prefix + shown.task() + " task, " + shown.object() + ", " + shown.controller()
+                    + " controller, seed " + shown.seed() + "; H in the window lists the keys, Esc quits");
+            double warmup = benchmarkFrames > 0 ? config.benchmark().warmupSeconds() : 0;
+            Viewer.Stats stats = viewer.run(benchmarkFrames, warmup);
+            if (screenshot != null) {
+                System.out.println(prefix + "screenshot " + viewer.writeScreenshot(screenshot));
+            }
+            if (benchmarkFrames > 0) {
+                int[] size = viewer.size();
+                System.out.printf(Locale.ROOT, "%sbenchmark: %d frames in %.2f s after a %.1f s warm-up: mean %.1f FPS; "
+                        + "real-time factor %.3f (%.2f simulated s, h = %.1f ms); %dx%d, %s%n", prefix, stats.frames(),
+                        stats.wallSeconds(), warmup, stats.fps(), stats.realTimeFactor(), stats.simSeconds(),
+                        Runtime.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
+            }
+        }
+        return 0;
+    }
+}

@@ -1,0 +1,64 @@
+package handsim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import handsim.config.Json;
+import handsim.task.HeightControl;
+import handsim.task.HeightGoals;
+import handsim.task.InteractiveScene;
+import handsim.task.SceneCatalog;
+import handsim.task.SceneSetup;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The demo's headless path end to end, and the viewer's scene wiring and its fallbacks. */
+class CommandsTest {
+
+    @Test
+    void demoHeadlessPrintsEachThrowAndWritesItsSummaryAndPlot(@TempDir Path dir) throws Exception {
+        PrintStream stdout = System.out;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+            code = Main.run("demo", "--headless", "--loops", "1", "--seed", "1", "--out", dir.toString());
+        } finally {
+            System.setOut(stdout);
+        }
+        String text = printed.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, text);
+        assertTrue(text.contains("object thrown in, caught") && text.contains("throw   1/1"), text);
+        JsonNode summary = Json.load(dir.resolve("summary.json")).node();
+        assertEquals(1, summary.get("throws").asInt());
+        assertEquals("nominal", summary.get("controller").asText());
+        var plot = ImageIO.read(dir.resolve("apex.png").toFile());
+        assertTrue(plot.getWidth() > 100 && plot.getHeight() > 100, "a picture of the apex per throw");
+        assertEquals(2, Files.readAllLines(dir.resolve("loops.csv")).size(), "a header and one row per throw");
+    }
+
+    @Test
+    void unbuiltTasksAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
+        SceneCatalog.Opened opened = catalog.open(new SceneSetup("box", "sphere", "learned", 1));
+        try (InteractiveScene scene = opened.scene()) {
+            assertEquals(new SceneSetup("height", "sphere", "nominal", 1), opened.setup());
+            String notes = String.join(" | ", opened.notes());
+            assertTrue(notes.contains("box task is not built yet") && notes.contains("--policy"), notes);
+            scene.advance(0.01);
+            assertTrue(scene.time() > 0, "the fallback scene runs");
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> catalog.validate(new SceneSetup("height", "football", "nominal", 1)));
+        assertTrue(e.getMessage().contains("--object") && e.getMessage().contains("football"), e.getMessage());
+        assertEquals("sphere", catalog.objects().get(0), "the paper's sphere first");
+    }
+}
