@@ -45,6 +45,18 @@ public final class TestSupport {
         return ObjectSpec.load(Home.resolve("configs/objects/" + name + ".json"));
     }
 
+    /** The palm centre in the neutral pose (m, world). */
+    public static Vec3 neutralPalm() {
+        return new handsim.kin.Kinematics(model()).siteFrame(model().site("palm_center"), model().poseVector("neutral")).origin();
+    }
+
+    /** The shipped height task (configs/tasks/height.json) aiming at {@code goals}. */
+    public static handsim.task.HeightTask heightTask(handsim.task.HeightGoals goals) {
+        return new handsim.task.HeightTask(handsim.task.HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json"))),
+                goals, handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json")).nominalThrows(),
+                neutralPalm(), simConfig().groundHeight());
+    }
+
     /** Uniform random joint angles inside the limits, shrunk by {@code margin} rad on each side. */
     public static double[] randomPose(HandModel m, SplittableRandom rng, double margin) {
         double[] q = new double[m.dofCount()];

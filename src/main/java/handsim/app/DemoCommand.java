@@ -65,7 +65,7 @@ final class DemoCommand implements Callable<Integer> {
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, goals);
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(goals));
         Path dir = out != null ? out : Home.resolve("runs/demo__" + object + "__" + seed + "__"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
 

@@ -64,7 +64,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
         List<EpisodeResult> results = new ArrayList<>();
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");

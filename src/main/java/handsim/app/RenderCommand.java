@@ -98,7 +98,7 @@ final class RenderCommand implements Callable<Integer> {
         if (controller == null) {
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
         ViewerConfig.Goals g = viewerConfig.goals();
         return new CatchLoopScene(sim, evaluation, seed, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()));
     }

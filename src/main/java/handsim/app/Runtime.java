@@ -12,7 +12,12 @@ import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeLimits;
+import handsim.kin.Kinematics;
+import handsim.math.Vec3;
+import handsim.task.BoxTask;
 import handsim.task.HeightGoals;
+import handsim.task.HeightTask;
+import handsim.task.ThrowTask;
 import handsim.task.LaunchDistribution;
 import java.nio.file.Path;
 
@@ -47,11 +52,35 @@ final class Runtime {
         return ObjectSpec.load(file);
     }
 
-    /** Seeded catch-and-throw episodes of the nominal controller with the shipped launch and episode configs. */
-    static CatchEvaluation nominalEvaluation(String object, HeightGoals goals) {
-        return CatchEvaluation.nominal(controllerConfig(),
-                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), object(object), goals);
+    /** Seeded catch-and-throw episodes of the nominal controller on {@code task} with the shipped launch and episode configs. */
+    static CatchEvaluation nominalEvaluation(String object, ThrowTask task) {
+        return CatchEvaluation.nominal(controllerConfig(), episodeLimits(), launches(), object(object), task);
+    }
+
+    static EpisodeLimits episodeLimits() {
+        return EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json")));
+    }
+
+    static LaunchDistribution launches() {
+        return LaunchDistribution.load(Home.resolve("configs/launch.json"));
+    }
+
+    /** The palm centre in the model's neutral pose (m, world): where tasks measure their goals from. */
+    static Vec3 neutralPalm(HandModel model) {
+        return new Kinematics(model).siteFrame(model.site("palm_center"), model.poseVector("neutral")).origin();
+    }
+
+    /** The height task of {@code configs/tasks/height.json} aiming at {@code goals}. */
+    static HeightTask heightTask(HeightGoals goals) {
+        HandModel model = model(null);
+        return new HeightTask(HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json"))), goals,
+                controllerConfig().nominalThrows(), neutralPalm(model), simConfig().groundHeight());
+    }
+
+    /** The box task of {@code configs/tasks/box.json}. */
+    static BoxTask boxTask() {
+        return new BoxTask(BoxTask.Config.parse(Json.load(Home.resolve("configs/tasks/box.json"))),
+                controllerConfig().nominalThrows(), neutralPalm(model(null)));
     }
 
     static Simulator simulator(HandModel model, SimConfig config) {

@@ -105,7 +105,7 @@ final class ShippedScenes implements SceneCatalog {
             shown = shown.withController("nominal");
         }
         InteractiveScene scene = new CatchLoopScene(Runtime.simulator(model, simConfig),
-                Runtime.nominalEvaluation(shown.object(), goals), shown.seed(), heightControl);
+                Runtime.nominalEvaluation(shown.object(), Runtime.heightTask(goals)), shown.seed(), heightControl);
         return new Opened(scene, shown, notes);
     }
 

@@ -24,12 +24,16 @@ import java.nio.file.Path;
  * @param headingSearch how the catch planner turns the palm about its normal until the arm can
  *     reach it
  * @param reachIkIterations IK iterations spent judging whether one palm frame is reachable
+ * @param replanSpeedChange during CATCH, before any contact, the catch is planned again when the
+ *     object's velocity differs from the ballistic prediction by more than this (m/s): it
+ *     bounced off something
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
         double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
         double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
-        Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations) {
+        Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations,
+        double replanSpeedChange) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -40,7 +44,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         Json fsm = j.get("fsm");
         fsm.allow("comment");
         Json catching = j.get("catch");
-        catching.allow("comment", "headingComment");
+        catching.allow("comment", "headingComment", "replanComment");
         Json poses = j.get("handPoses");
         poses.allow("comment");
         Json throwing = j.get("throw");
@@ -67,7 +71,8 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                         Math.toRadians(catching.number("headingMaxDeg", 0, 180)),
                         catching.positive("reachPositionTolerance"),
                         Math.toRadians(catching.positive("reachRotationToleranceDeg"))),
-                catching.integer("reachIkIterations", 1, 10000));
+                catching.integer("reachIkIterations", 1, 10000),
+                catching.positive("replanSpeedChange"));
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }

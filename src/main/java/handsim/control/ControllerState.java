@@ -1,5 +1,7 @@
 package handsim.control;
 
+import handsim.sim.RigidState;
+
 /**
  * The nominal controller's explicit state: FSM phase and the time it began, the current palm
  * trajectory, the hand-pose transition, the IK solution the next tick warm-starts from, and the
@@ -10,7 +12,14 @@ public final class ControllerState {
     Phase phase;
     double phaseStart;
     PalmTrajectory trajectory;
+    /** Simulated time at which {@link #trajectory} begins (the phase start, or a re-plan). */
+    double trajectoryStart;
     CatchPlanner.Plan plan;
+    /** The object's state the current catch was planned from, and when. */
+    RigidState plannedFrom;
+    double plannedAt;
+    /** Simulated time at which the planned interception ends CATCH. */
+    double catchEnd;
     ThrowParameters currentThrow;
     /** The hand closed on a contact since the current CATCH began. */
     boolean closedOnContact;
@@ -80,7 +89,11 @@ public final class ControllerState {
         c.phase = phase;
         c.phaseStart = phaseStart;
         c.trajectory = trajectory;
+        c.trajectoryStart = trajectoryStart;
         c.plan = plan;
+        c.plannedFrom = plannedFrom;
+        c.plannedAt = plannedAt;
+        c.catchEnd = catchEnd;
         c.currentThrow = currentThrow;
         c.closedOnContact = closedOnContact;
         c.handPose = handPose;

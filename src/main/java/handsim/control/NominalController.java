@@ -28,6 +28,7 @@ public final class NominalController {
     private final DlsIk ik;
     private final Grasp grasp;
     private final HandPoses poses;
+    private final Ballistics ballistics;
     private final CatchPlanner planner;
     private final double[] neutralPose;
     private final Frame neutralPalm;
@@ -51,7 +52,8 @@ public final class NominalController {
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("grasp of " + object.name() + " in the controller config: " + e.getMessage(), e);
         }
-        this.planner = new CatchPlanner(new Ballistics(gravity), config.interceptionHeight(),
+        this.ballistics = new Ballistics(gravity);
+        this.planner = new CatchPlanner(ballistics, config.interceptionHeight(),
                 config.catchVelocityFraction(), config.catchMinDuration(), config.headingSearch());
         this.neutralPose = model.poseVector("neutral");
         this.neutralPalm = kin.siteFrame(palm, neutralPose);
@@ -79,6 +81,14 @@ public final class NominalController {
         return s;
     }
 
+    /**
+     * True when {@link #update} with this observation will end MIDDLE and begin a THROW, asking
+     * the throw policy for its parameters: the moment a learner decides (sec. 3.7).
+     */
+    public boolean throwDue(Observation obs, ControllerState s) {
+        return s.phase == Phase.MIDDLE && obs.time() - s.phaseStart >= duration(s);
+    }
+
     /** Advances the state machine to the observation's time and writes the new targets. */
     public void update(Observation obs, ControllerState s) {
         // the hand closes at the first hand-object contact since CATCH began (sec. 3.1)
@@ -89,13 +99,15 @@ public final class NominalController {
         // state transitions on the elapsed time in the state (sec. 3.1, Fig. 3)
         if (obs.time() - s.phaseStart >= duration(s)) {
             enter(s.phase.next(), obs, s);
+        } else if (s.phase == Phase.CATCH && !s.closedOnContact && leftPredictedFlight(obs, s)) {
+            // the object did not fly as predicted (it bounced off the box): plan the catch again
+            replanCatch(obs, s);
         }
-        double t = obs.time() - s.phaseStart;
-        if (s.phase == Phase.THROW && t >= s.currentThrow.tOpen() && s.handPose != HandPose.OPEN) {
+        if (s.phase == Phase.THROW && obs.time() - s.phaseStart >= s.currentThrow.tOpen() && s.handPose != HandPose.OPEN) {
             blendTo(HandPose.OPEN, config.openTime(), obs.time(), s);
         }
         // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
-        ik.solve(s.ikSolution, s.trajectory.at(t));
+        ik.solve(s.ikSolution, s.trajectory.at(obs.time() - s.trajectoryStart));
         for (int d : ik.dofs()) {
             s.targets[d] = s.ikSolution[d];
         }
@@ -105,7 +117,7 @@ public final class NominalController {
 
     private double duration(ControllerState s) {
         return switch (s.phase) {
-            case CATCH -> s.plan.duration();
+            case CATCH -> s.catchEnd - s.phaseStart;
             case MIDDLE -> config.middleDuration();
             case THROW -> config.throwDuration();
             case GOBACK -> config.gobackDuration();
@@ -119,13 +131,10 @@ public final class NominalController {
         Quat r0 = obs.palm().rotation();
         s.phase = phase;
         s.phaseStart = obs.time();
+        s.trajectoryStart = obs.time();
         switch (phase) {
             case CATCH -> {
-                CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
-                        palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()));
-                s.plan = plan;
-                s.trajectory = new PalmTrajectory(new Hermite(p0, v0, plan.palmTarget().origin(), plan.palmVelocity(),
-                        plan.duration()), r0, plan.palmTarget().rotation());
+                planCatch(obs, p0, v0, r0, s);
                 s.closedOnContact = false;
                 blendTo(HandPose.OPEN, config.openTime(), obs.time(), s);
             }
@@ -146,6 +155,36 @@ public final class NominalController {
                 blendTo(HandPose.NEUTRAL, config.neutralTime(), obs.time(), s);
             }
         }
+    }
+
+    /**
+     * The CATCH curve from the palm state (p0, v0, r0) to the interception planned from the
+     * object's state now (sec. 3.6); CATCH ends at the interception.
+     */
+    private void planCatch(Observation obs, Vec3 p0, Vec3 v0, Quat r0, ControllerState s) {
+        CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
+                palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()));
+        s.plan = plan;
+        s.plannedFrom = obs.object();
+        s.plannedAt = obs.time();
+        s.catchEnd = obs.time() + plan.duration();
+        s.trajectory = new PalmTrajectory(new Hermite(p0, v0, plan.palmTarget().origin(), plan.palmVelocity(),
+                plan.duration()), r0, plan.palmTarget().rotation());
+    }
+
+    /** The object's velocity differs from the ballistic prediction of the plan by more than the configured change. */
+    private boolean leftPredictedFlight(Observation obs, ControllerState s) {
+        Vec3 predicted = ballistics.velocity(s.plannedFrom.velocity(), obs.time() - s.plannedAt);
+        return obs.object().velocity().distance(predicted) > config.replanSpeedChange();
+    }
+
+    /** A new CATCH curve from where the current one stands now, so the palm target moves on smoothly. */
+    private void replanCatch(Observation obs, ControllerState s) {
+        double t = obs.time() - s.trajectoryStart;
+        Frame at = s.trajectory.at(t);
+        Vec3 v = s.trajectory.velocity(Math.min(t, s.trajectory.duration()));
+        s.trajectoryStart = obs.time();
+        planCatch(obs, at.origin(), v, at.rotation(), s);
     }
 
     /** Starts a SLERP of the finger targets from where they are now to {@code pose}. */

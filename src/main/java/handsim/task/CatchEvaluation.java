@@ -2,7 +2,6 @@ package handsim.task;
 
 import handsim.control.ControllerConfig;
 import handsim.control.NominalController;
-import handsim.control.NominalThrowPolicy;
 import handsim.control.PdController;
 import handsim.control.ThrowPolicy;
 import handsim.sim.ObjectSpec;
@@ -11,9 +10,10 @@ import handsim.sim.Simulator;
 import java.util.SplittableRandom;
 
 /**
- * Seeded catch-and-throw episodes: each seed draws the object's size and mass within its
- * tolerance and a launch from the {@link LaunchDistribution}, then runs loops until a drop or
- * {@code maxLoops} throws. The same seed always gives the same episode.
+ * Seeded catch-and-throw episodes of a task: each seed draws the object's size and mass within
+ * its tolerance and a launch from the {@link LaunchDistribution}, sets up the task's episode
+ * (its goals, the box), then runs loops until a drop or {@code maxLoops} throws. The same seed
+ * always gives the same episode. Holds the task's episode state: one evaluation per thread.
  */
 public final class CatchEvaluation {
 
@@ -28,12 +28,12 @@ public final class CatchEvaluation {
     private final LaunchDistribution launches;
     private final ObjectSpec object;
     private final ThrowPolicy throwPolicy;
-    private final HeightGoals goals;
+    private final ThrowTask task;
 
-    /** {@code throwPolicy} aims at {@code goals}' current height. */
+    /** {@code throwPolicy} chooses the throws for {@code task}'s goals. */
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
-            ObjectSpec object, ThrowPolicy throwPolicy, HeightGoals goals) {
-        this.goals = goals;
+            ObjectSpec object, ThrowTask task, ThrowPolicy throwPolicy) {
+        this.task = task;
         this.controllerConfig = controllerConfig;
         this.limits = limits;
         this.launches = launches;
@@ -41,16 +41,15 @@ public final class CatchEvaluation {
         this.throwPolicy = throwPolicy;
     }
 
-    /** Evaluation of the nominal controller, its throws looked up for the goals' heights. */
+    /** Evaluation of the nominal controller: every throw is the task's hand-tuned one for its goal. */
     public static CatchEvaluation nominal(ControllerConfig controllerConfig, EpisodeLimits limits,
-            LaunchDistribution launches, ObjectSpec object, HeightGoals goals) {
-        return new CatchEvaluation(controllerConfig, limits, launches, object,
-                new NominalThrowPolicy(controllerConfig.nominalThrows(), goals::current), goals);
+            LaunchDistribution launches, ObjectSpec object, ThrowTask task) {
+        return new CatchEvaluation(controllerConfig, limits, launches, object, task, obs -> task.nominalThrow());
     }
 
-    /** The goal heights the throws aim at (shared by every episode this evaluation starts). */
-    public HeightGoals goals() {
-        return goals;
+    /** The task whose goals the throws aim at (its episode state is shared by every episode this evaluation starts). */
+    public ThrowTask task() {
+        return task;
     }
 
     /** The object thrown, before a seed varies it within its tolerance. */
@@ -79,7 +78,7 @@ public final class CatchEvaluation {
         RigidState launch = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
-                controller, goals, limits);
+                controller, task, limits);
         episode.start(thrown, launch, seed);
         return episode;
     }

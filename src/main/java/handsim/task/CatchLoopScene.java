@@ -1,7 +1,6 @@
 package handsim.task;
 
 import handsim.control.Phase;
-import handsim.kin.Kinematics;
 import handsim.math.Vec3;
 import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
@@ -11,17 +10,16 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * The height task for watching: endless catch-and-throw, running the episodes of a {@link
+ * A task for watching: endless catch-and-throw, running the episodes of a {@link
  * CatchEvaluation} one after another. When an episode ends (a drop, a time limit, or a diverged
  * simulation) the world is reset and the next seed's object is thrown in; the status says so.
- * The goal heights can be raised and lowered while it runs.
+ * The goal (the height, the box) can be moved while it runs.
  */
 public final class CatchLoopScene implements InteractiveScene {
 
     private final Simulator sim;
     private final CatchEvaluation evaluation;
     private final HeightControl heightControl;
-    private final Vec3 planeCenter;
     private CatchThrowEpisode episode;
     private long seed;
     private int episodes = 1;
@@ -36,9 +34,6 @@ public final class CatchLoopScene implements InteractiveScene {
         this.evaluation = evaluation;
         this.heightControl = heightControl;
         this.seed = seed;
-        // the goal plane is drawn around the palm's neutral position
-        this.planeCenter = new Kinematics(sim.model()).siteFrame(sim.model().site("palm_center"),
-                sim.model().poseVector("neutral")).origin();
         this.episode = evaluation.start(sim, seed);
     }
 
@@ -87,7 +82,8 @@ public final class CatchLoopScene implements InteractiveScene {
 
     @Override
     public String apply(SceneCommand command) {
-        HeightGoals goals = evaluation.goals();
+        ThrowTask task = evaluation.task();
+        double step = heightControl.step();
         switch (command) {
             case RESET -> {
                 episode = evaluation.start(sim, seed);
@@ -101,17 +97,28 @@ public final class CatchLoopScene implements InteractiveScene {
             }
             case GOAL_UP, GOAL_DOWN -> {
                 boolean up = command == SceneCommand.GOAL_UP;
-                double dy = up ? Math.min(heightControl.step(), heightControl.max() - goals.high())
-                        : Math.max(-heightControl.step(), heightControl.min() - goals.low());
-                if (up ? dy < 1e-9 : dy > -1e-9) {
-                    return String.format(Locale.ROOT, "height goals already at their %s bound (%.2f-%.2f m allowed)",
-                            up ? "upper" : "lower", heightControl.min(), heightControl.max());
+                double dy = up ? step : -step;
+                if (task instanceof HeightTask h) {
+                    HeightGoals goals = h.goals();
+                    dy = up ? Math.min(step, heightControl.max() - goals.high()) : Math.max(-step, heightControl.min() - goals.low());
+                    if (up ? dy < 1e-9 : dy > -1e-9) {
+                        return String.format(Locale.ROOT, "height goals already at their %s bound (%.2f-%.2f m allowed)",
+                                up ? "upper" : "lower", heightControl.min(), heightControl.max());
+                    }
                 }
-                goals.shift(dy);
-                return String.format(Locale.ROOT, "next throws aim at %s", goalRange(goals));
+                return task.moveGoal(new Vec3(0, dy, 0));
             }
-            case GOAL_LEFT, GOAL_RIGHT, GOAL_NEARER, GOAL_FARTHER -> {
-                return "the height task has no box to move (raise or lower the height goal instead)";
+            case GOAL_LEFT -> {
+                return task.moveGoal(new Vec3(-step, 0, 0));
+            }
+            case GOAL_RIGHT -> {
+                return task.moveGoal(new Vec3(step, 0, 0));
+            }
+            case GOAL_NEARER -> {
+                return task.moveGoal(new Vec3(0, 0, -step));
+            }
+            case GOAL_FARTHER -> {
+                return task.moveGoal(new Vec3(0, 0, step));
             }
             default -> {
                 return command + " is not something this scene can do";
@@ -119,21 +126,18 @@ public final class CatchLoopScene implements InteractiveScene {
         }
     }
 
-    private static String goalRange(HeightGoals goals) {
-        return goals.high() > goals.low()
-                ? String.format(Locale.ROOT, "%.2f-%.2f m (now %.2f m)", goals.low(), goals.high(), goals.current())
-                : String.format(Locale.ROOT, "%.2f m", goals.current());
-    }
-
     /**
-     * The throw in the air aims at the episode's current throw goal; while the object rests in
-     * the hand (MIDDLE) and before the first throw, the goal shown is the next throw's.
+     * The task's goal; for the height task the throw in the air shows the height it aims at,
+     * while the object rests in the hand (MIDDLE) and before the first throw the next throw's.
      */
     @Override
     public Goal goal() {
+        Goal g = evaluation.task().drawing();
         double inFlight = episode.throwGoal();
-        boolean upcoming = Double.isNaN(inFlight) || episode.state().phase() == Phase.MIDDLE;
-        return new Goal.Height(upcoming ? evaluation.goals().current() : inFlight, planeCenter);
+        if (g instanceof Goal.Height h && !Double.isNaN(inFlight) && episode.state().phase() != Phase.MIDDLE) {
+            return new Goal.Height(inFlight, h.center());
+        }
+        return g;
     }
 
     @Override
@@ -158,11 +162,22 @@ public final class CatchLoopScene implements InteractiveScene {
         // loop 0 catches the throw-in, loop k >= 1 is the k-th throw and its catch
         s.put("loop", Integer.toString(episode.loops().size()));
         s.put("catches in a row", catchesInARow + " (best " + bestInARow + ")");
-        s.put("last apex", lastThrow == null ? "-" : String.format(Locale.ROOT, "%.3f m (goal %.3f, %+.3f)",
-                lastThrow.apexHeight(), lastThrow.targetHeight(), lastThrow.apexHeight() - lastThrow.targetHeight()));
-        double shown = ((Goal.Height) goal()).height(), next = evaluation.goals().current();
-        s.put("goal", Math.abs(shown - next) > 5e-4 ? String.format(Locale.ROOT, "%.3f m (next %.3f m)", shown, next)
-                : String.format(Locale.ROOT, "%.3f m", shown));
+        ThrowTask task = evaluation.task();
+        s.put("task", task.name());
+        if (goal() instanceof Goal.Height h) {
+            s.put("last apex", lastThrow == null ? "-" : String.format(Locale.ROOT, "%.3f m (goal %.3f, %+.3f)",
+                    lastThrow.apexHeight(), lastThrow.targetHeight(), lastThrow.apexHeight() - lastThrow.targetHeight()));
+            double next = task.targetHeight();
+            s.put("goal", Math.abs(h.height() - next) > 5e-4 ? String.format(Locale.ROOT, "%.3f m (next %.3f m)", h.height(), next)
+                    : String.format(Locale.ROOT, "%.3f m", h.height()));
+        } else if (goal() instanceof Goal.Box b) {
+            s.put("box", String.format(Locale.ROOT, "(%.2f, %.2f, %.2f) m", b.center().x(), b.center().y(), b.center().z()));
+            s.put("last hit", lastThrow == null ? "-" : lastThrow.boxHit() ? "hit" : String.format(Locale.ROOT, "missed by %.3f m",
+                    lastThrow.boxDistance()));
+        }
+        if (lastThrow != null && !Double.isNaN(lastThrow.flightRotation())) {
+            s.put("last turn", String.format(Locale.ROOT, "%.0f deg in flight", Math.toDegrees(lastThrow.flightRotation())));
+        }
         s.put("last", lastEvent);
         s.put("episode", "seed " + seed + " (" + episodes + " so far)");
         s.put("t", String.format(Locale.ROOT, "%.2f s", sim.time()));

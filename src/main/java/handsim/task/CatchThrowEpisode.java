@@ -3,9 +3,9 @@ package handsim.task;
 import handsim.control.ControllerState;
 import handsim.control.NominalController;
 import handsim.control.Observation;
+import handsim.control.PdController;
 import handsim.control.Phase;
 import handsim.control.ThrowParameters;
-import handsim.control.PdController;
 import handsim.kin.Frame;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
@@ -13,23 +13,34 @@ import handsim.model.Site;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.Simulator;
+import handsim.sim.WorldSnapshot;
 import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Catch-and-throw loops of one object with a {@link NominalController}: the arm starts at rest
- * in the neutral pose, the object is launched toward it, and the controller catches and throws
- * until the object is dropped or a loop is cut off by time. The object is moved only by
- * gravity, damping and contacts: nothing here touches it after the launch.
+ * Catch-and-throw loops of one object with a {@link NominalController} on a {@link ThrowTask}:
+ * the arm starts at rest in the neutral pose, the object is launched toward it, and the
+ * controller catches and throws until the object is dropped or a loop is cut off by time. The
+ * object is moved only by gravity, damping and contacts: nothing here touches it after the
+ * launch.
+ *
+ * <p>A tick is one controller period: whole physics steps, then the controller's reaction. The
+ * catch of a loop is judged when MIDDLE ends, just before the controller asks its throw policy
+ * for the next THROW. {@link #runUntilThrowDue} stops exactly there, so that a learner can choose
+ * that throw (one decision per THROW, sec. 3.7).
  */
 public final class CatchThrowEpisode {
 
     /** How the episode stands after a tick. */
     public enum Status { RUNNING, DROPPED, TIME_LIMIT }
 
+    /** Where the object of the current loop is, relative to the throw's flight. */
+    private enum Flight { BEFORE_RELEASE, FLYING, LANDED }
+
     private final Simulator sim;
     private final ServoLoop loop;
     private final NominalController controller;
+    private final ThrowTask task;
     private final EpisodeLimits limits;
     private final HandModel model;
     private final Site palm;
@@ -39,23 +50,31 @@ public final class CatchThrowEpisode {
     private final List<LoopRecord> loops = new ArrayList<>();
     private ControllerState state;
     private Status status = Status.RUNNING;
-    private Phase lastPhase;
+    private long touchedSinceTick;
+    private List<WorldSnapshot.StaticBox> boxes = List.of();
+    private Vec3 longAxis;
+    private double objectRadius;
+    /** The observation the episode stopped at, waiting for the throw to be chosen; null when not waiting. */
+    private Observation waiting;
     // statistics of the loop in progress
     private double loopStart;
     private double apex;
     private double maxDepth;
     private double maxLimitExcess;
-    private long touchedSinceTick;
+    private boolean boxHit;
+    private double boxDistance;
+    private Flight flight;
+    private Vec3 lastAxis;
+    private double flightRotation;
     private Vec3 landing;
     private ThrowParameters loopThrow;
     private double loopGoal = Double.NaN;
-    private final HeightGoals goals;
 
-    /** {@code goals} are the desired apex heights the controller's throw policy reads. */
-    public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, HeightGoals goals,
+    /** {@code task} sets each throw's goal; the controller's throw policy reads it. */
+    public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, ThrowTask task,
             EpisodeLimits limits) {
         this.sim = sim;
-        this.goals = goals;
+        this.task = task;
         this.loop = new ServoLoop(sim, pd);
         this.controller = controller;
         this.limits = limits;
@@ -66,22 +85,29 @@ public final class CatchThrowEpisode {
         this.qd = new double[model.dofCount()];
     }
 
-    /** Resets the world (arm at rest in the neutral pose) and launches {@code object}. */
+    /** Resets the world (arm at rest in the neutral pose), sets up the task's episode and launches {@code object}. */
     public void start(ObjectSpec object, RigidState launch, long seed) {
         sim.reset(model.poseVector("neutral"), seed);
-        goals.reset(seed);
+        task.start(sim, seed);
+        boxes = sim.staticBoxes();
+        longAxis = object.longAxis().orElse(null);
+        objectRadius = object.boundingRadius();
         sim.spawnObject(object, launch);
         loops.clear();
         status = Status.RUNNING;
         touchedSinceTick = 0;
+        waiting = null;
         state = controller.start(observe());
-        lastPhase = state.phase();
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
         beginLoop();
     }
 
     public Simulator sim() {
         return sim;
+    }
+
+    public ThrowTask task() {
+        return task;
     }
 
     public ControllerState state() {
@@ -92,7 +118,7 @@ public final class CatchThrowEpisode {
         return status;
     }
 
-    /** The apex height the throw now in progress aims at (m; NaN before the first throw). */
+    /** The apex height the throw now in progress aims at (m; NaN before the first throw or without a height goal). */
     public double throwGoal() {
         return loopGoal;
     }
@@ -117,16 +143,85 @@ public final class CatchThrowEpisode {
 
     /**
      * Runs one controller period (a whole number of physics steps), then lets the controller
-     * react. Returns the loop record finished during this tick, or null.
+     * react. Returns the loop record finished during this tick, or null. An episode stopped by
+     * {@link #runUntilThrowDue} goes on from there: the controller asks its throw policy now.
      */
     public LoopRecord tick() {
+        requireRunning();
+        if (waiting != null) {
+            resume();
+            return null;
+        }
+        LoopRecord dropped = advancePhysics();
+        if (dropped != null) {
+            return dropped;
+        }
+        Observation obs = takeObservation();
+        LoopRecord judged = null;
+        if (controller.throwDue(obs, state)) {
+            judged = judgeCatch(obs);
+            if (status != Status.RUNNING) {
+                return judged;
+            }
+        }
+        LoopRecord cutOff = react(obs);
+        return judged != null ? judged : cutOff;
+    }
+
+    /**
+     * Ticks until the controller is about to choose a THROW (the catch before it judged and
+     * recorded) and returns the observation it will choose on; the episode then waits for the
+     * throw policy, which is asked by the next {@link #tick()} or {@link #resume()}. Returns
+     * null when the episode ended first.
+     */
+    public Observation runUntilThrowDue() {
+        requireRunning();
+        if (waiting != null) {
+            return waiting;
+        }
+        while (true) {
+            if (advancePhysics() != null) {
+                return null;
+            }
+            Observation obs = takeObservation();
+            if (controller.throwDue(obs, state)) {
+                judgeCatch(obs);
+                if (status != Status.RUNNING) {
+                    return null;
+                }
+                waiting = obs;
+                return obs;
+            }
+            react(obs);
+            if (status != Status.RUNNING) {
+                return null;
+            }
+        }
+    }
+
+    /** Goes on from {@link #runUntilThrowDue}: the controller asks its throw policy and begins the THROW. */
+    public void resume() {
+        if (waiting == null) {
+            throw new IllegalStateException("the episode is not waiting for a throw");
+        }
+        Observation obs = waiting;
+        waiting = null;
+        react(obs);
+    }
+
+    private void requireRunning() {
         if (status != Status.RUNNING) {
             throw new IllegalStateException("episode is over: " + status);
         }
+    }
+
+    /** The physics of one controller period; the loop record if the object was dropped. */
+    private LoopRecord advancePhysics() {
         for (int i = 0; i < periodSteps; i++) {
             loop.step();
             touchedSinceTick |= sim.handContacts().bodyMask();
             maxDepth = Math.max(maxDepth, sim.handContacts().maxDepth());
+            boxHit |= sim.objectTouchesBox();
             RigidState o = sim.objectState();
             apex = Math.max(apex, o.position().y());
             if (sim.objectTouchesGround() || o.position().distance(model.joints().get(0).anchor()) > limits.maxDistance()) {
@@ -135,29 +230,68 @@ public final class CatchThrowEpisode {
                 return finishLoop(false);
             }
         }
+        return null;
+    }
+
+    /** The observation at the end of a period, with the loop's per-tick statistics updated from it. */
+    private Observation takeObservation() {
         Observation obs = observe();
         touchedSinceTick = 0;
         for (int i = 0; i < q.length; i++) {
             maxLimitExcess = Math.max(maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
         }
+        for (WorldSnapshot.StaticBox b : boxes) {
+            boxDistance = Math.min(boxDistance, Math.max(0, distanceToBox(obs.object().position(), b) - objectRadius));
+        }
+        trackFlight(obs);
+        return obs;
+    }
+
+    /**
+     * The long axis's turning while the object flies free: from the first tick of the loop's
+     * throw without a hand contact (the release) to the first contact after it (the catch).
+     */
+    private void trackFlight(Observation obs) {
+        if (longAxis == null || loops.isEmpty() || flight == Flight.LANDED) {
+            return;
+        }
+        boolean touching = obs.handTouchedObject();
+        Vec3 axis = obs.object().orientation().rotate(longAxis);
+        if (flight == Flight.BEFORE_RELEASE) {
+            if (!touching && state.phase() != Phase.MIDDLE) {
+                flight = Flight.FLYING;
+                lastAxis = axis;
+            }
+        } else if (touching) {
+            flight = Flight.LANDED;
+        } else {
+            flightRotation += Math.acos(Math.max(-1, Math.min(1, lastAxis.dot(axis))));
+            lastAxis = axis;
+        }
+    }
+
+    /** The controller's reaction to an observation; the loop record if the loop ran out of time. */
+    private LoopRecord react(Observation obs) {
+        Phase before = state.phase();
         controller.update(obs, state);
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
-        LoopRecord finished = null;
-        if (lastPhase == Phase.MIDDLE && state.phase() == Phase.THROW) {
-            // the catch is judged when MIDDLE ends: is the object resting in the hand?
-            boolean held = obs.object().position().distance(obs.palm().origin()) < limits.holdDistance();
-            finished = finishLoop(held);
-            if (!held) {
-                status = Status.DROPPED;
-            } else {
-                beginLoop();
-            }
+        if (before == Phase.MIDDLE && state.phase() == Phase.THROW) {
+            beginLoop();
         } else if (sim.time() - loopStart > limits.maxLoopSeconds()) {
             status = Status.TIME_LIMIT;
-            finished = finishLoop(false);
+            return finishLoop(false);
         }
-        lastPhase = state.phase();
-        return finished;
+        return null;
+    }
+
+    /** The catch is judged when MIDDLE ends: is the object resting in the hand? */
+    private LoopRecord judgeCatch(Observation obs) {
+        boolean held = obs.object().position().distance(obs.palm().origin()) < limits.holdDistance();
+        if (!held) {
+            landing = obs.object().position();
+            status = Status.DROPPED;
+        }
+        return finishLoop(held);
     }
 
     private void beginLoop() {
@@ -165,21 +299,38 @@ public final class CatchThrowEpisode {
         apex = Double.NEGATIVE_INFINITY;
         maxDepth = 0;
         maxLimitExcess = 0;
+        boxHit = false;
+        boxDistance = Double.POSITIVE_INFINITY;
+        flight = Flight.BEFORE_RELEASE;
+        flightRotation = 0;
         landing = null;
         loopThrow = loops.isEmpty() ? null : state.currentThrow();
-        loopGoal = loops.isEmpty() ? Double.NaN : goals.current();
+        loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
         if (!loops.isEmpty()) {
-            goals.advance(); // the throw of this loop is made: the next one aims at a new goal
+            task.advance(); // the throw of this loop is made: the next one aims at its own goal
         }
         loop.resetPeakTorqueRatio();
     }
 
     private LoopRecord finishLoop(boolean caught) {
         int index = loops.size();
+        if (!caught && landing == null) {
+            landing = sim.objectState().position();
+        }
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
-                loopGoal, loopThrow, maxDepth, maxLimitExcess, loop.peakTorqueRatio(),
-                sim.time() - loopStart);
+                loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
+                index == 0 || longAxis == null ? Double.NaN : flightRotation,
+                maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;
+    }
+
+    /** Distance (m) from a point to a box (0 inside). */
+    static double distanceToBox(Vec3 p, WorldSnapshot.StaticBox b) {
+        Vec3 c = b.center(), h = b.size().times(0.5);
+        double dx = Math.max(0, Math.abs(p.x() - c.x()) - h.x());
+        double dy = Math.max(0, Math.abs(p.y() - c.y()) - h.y());
+        double dz = Math.max(0, Math.abs(p.z() - c.z()) - h.z());
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 }

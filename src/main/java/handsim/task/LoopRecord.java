@@ -10,14 +10,21 @@ import handsim.math.Vec3;
  * @param caught the object was held in the hand at the end of MIDDLE
  * @param apexHeight highest height of the object's centre during the loop's flight (m; NaN for loop 0)
  * @param landing where the object touched the ground when dropped (null if caught)
- * @param targetHeight the apex height the loop's throw aimed at (m; NaN for loop 0)
+ * @param targetHeight the apex height the loop's throw aimed at (m; NaN for loop 0 and for
+ *     tasks without a height goal)
  * @param throwParams the THROW parameters of the loop (null for loop 0)
+ * @param boxHit the object touched a static box (the box task's target) during the loop
+ * @param boxDistance least distance between the object and a static box during the loop (m;
+ *     0 when it touched one, NaN when there is no box)
+ * @param flightRotation how far the object's long axis turned while the object flew free of the
+ *     hand, from the release of the throw to the first touch of the catch (rad, accumulated over
+ *     the flight, so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
  * @param maxPenetration deepest hand-object penetration during the loop (m)
  * @param maxLimitExcess largest excursion of any joint beyond its limit (rad)
  * @param peakTorqueRatio largest |tau| / strength of any DOF (1 = at the human limit; PD torques are clamped)
  * @param duration simulated length of the loop (s)
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
-        ThrowParameters throwParams,
+        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation,
         double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

@@ -29,7 +29,7 @@ class NominalControllerTest {
     private final double tick = config.periodSteps() * TestSupport.simConfig().timeStep();
     private final Kinematics kin = new Kinematics(model);
     private final NominalController controller = new NominalController(model, config, TestSupport.object("sphere"),
-            new NominalThrowPolicy(config.nominalThrows(), () -> 1.2), GRAVITY);
+            obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
     private final RigidState launch = RigidState.at(new Vec3(0.05, 1.2, 1.2), new Vec3(0, 1.0, -1.3));
 
     @Test

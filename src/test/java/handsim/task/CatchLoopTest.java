@@ -110,7 +110,7 @@ class CatchLoopTest {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         return CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                HeightGoals.fixed(1.2));
+                TestSupport.heightTask(HeightGoals.fixed(1.2)));
     }
 
     private static String row(CatchThrowEpisode e) {

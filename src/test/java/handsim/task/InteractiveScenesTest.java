@@ -98,7 +98,7 @@ class InteractiveScenesTest {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         HeightGoals goals = new HeightGoals(1.1, 1.3);
         CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), goals);
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), TestSupport.heightTask(goals));
         HeightControl control = new HeightControl(0.05, 1.0, 1.4);
         try (CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()),
                 evaluation, 7, control)) {

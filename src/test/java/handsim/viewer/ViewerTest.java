@@ -51,7 +51,7 @@ class ViewerTest {
         ViewerConfig config = TestSupport.viewerConfig();
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), HeightGoals.fixed(1.2));
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), TestSupport.heightTask(HeightGoals.fixed(1.2)));
         CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()), evaluation, SEED,
                 new HeightControl(0.05, 0.8, 1.7));
         ViewerConfig.Pacing p = config.pacing();

@@ -1,0 +1,136 @@
+package handsim.task;
+
+import handsim.config.Json;
+import handsim.control.NominalThrows;
+import handsim.control.ThrowParameters;
+import handsim.math.Vec3;
+import handsim.sim.Simulator;
+import java.util.Locale;
+
+/**
+ * Throw to a desired height (paper sec. 4.2): every throw aims at a new apex height. Reward eq.
+ * (5), with the sign slip of the printed exponent corrected (SPEC.md): a caught throw scores
+ * {@code exp(-sharpness |apex - target|)}, a dropped one {@code -missWeight |p_p - p_d|} with
+ * p_p where the object came down and p_d the neutral palm centre dropped to the ground.
+ */
+public final class HeightTask implements ThrowTask {
+
+    /**
+     * {@code configs/tasks/height.json}.
+     *
+     * @param low, high range of the target apex heights (m, world)
+     * @param sharpness the 10 of eq. (5) (1/m)
+     * @param missWeight the 0.1 of eq. (5)'s miss term (1/m)
+     * @param successTolerance a caught throw within this of its target counts as a success (m)
+     */
+    public record Config(double low, double high, double sharpness, double missWeight, double successTolerance) {
+
+        public static Config parse(Json j) {
+            j.allow("comment");
+            double[] range = j.range("goalRange");
+            if (!(range[0] > 0)) {
+                throw j.fieldError("goalRange", "heights must be above 0 m, got " + range[0]);
+            }
+            Config c = new Config(range[0], range[1], j.positive("sharpness"), j.number("missWeight", 0, 100),
+                    j.positive("successTolerance"));
+            j.requireNoUnknownFields();
+            return c;
+        }
+    }
+
+    private final Config config;
+    private final HeightGoals goals;
+    private final NominalThrows nominal;
+    private final Vec3 missTarget;
+    private final Vec3 planeCenter;
+
+    /**
+     * @param goals the target heights (shared with whoever steers them, e.g. the viewer)
+     * @param neutralPalm the palm centre in the neutral pose (m, world): p_d lies below it
+     */
+    public HeightTask(Config config, HeightGoals goals, NominalThrows nominal, Vec3 neutralPalm, double groundHeight) {
+        this.config = config;
+        this.goals = goals;
+        this.nominal = nominal;
+        this.missTarget = new Vec3(neutralPalm.x(), groundHeight, neutralPalm.z());
+        this.planeCenter = neutralPalm;
+    }
+
+    /** The task over the config's goal range. */
+    public HeightTask(Config config, NominalThrows nominal, Vec3 neutralPalm, double groundHeight) {
+        this(config, new HeightGoals(config.low(), config.high()), nominal, neutralPalm, groundHeight);
+    }
+
+    public HeightGoals goals() {
+        return goals;
+    }
+
+    public Config config() {
+        return config;
+    }
+
+    @Override
+    public String name() {
+        return "height";
+    }
+
+    @Override
+    public int goalSize() {
+        return 1;
+    }
+
+    @Override
+    public void start(Simulator sim, long seed) {
+        goals.reset(seed);
+    }
+
+    @Override
+    public double[] goal() {
+        return new double[] {goals.current()};
+    }
+
+    @Override
+    public double targetHeight() {
+        return goals.current();
+    }
+
+    @Override
+    public void advance() {
+        goals.advance();
+    }
+
+    @Override
+    public ThrowParameters nominalThrow() {
+        return nominal.forHeight(goals.current());
+    }
+
+    /** eq. (5), corrected. */
+    @Override
+    public double reward(LoopRecord loop) {
+        if (loop.caught()) {
+            return Math.exp(-config.sharpness() * Math.abs(loop.apexHeight() - loop.targetHeight()));
+        }
+        return -config.missWeight() * loop.landing().distance(missTarget);
+    }
+
+    @Override
+    public boolean success(LoopRecord loop) {
+        return loop.caught() && Math.abs(loop.apexHeight() - loop.targetHeight()) <= config.successTolerance();
+    }
+
+    @Override
+    public Goal drawing() {
+        return new Goal.Height(goals.current(), planeCenter);
+    }
+
+    @Override
+    public String moveGoal(Vec3 delta) {
+        if (Math.abs(delta.y()) < 1e-12) {
+            return "the height task has no box to move (raise or lower the height goal instead)";
+        }
+        goals.shift(delta.y());
+        return String.format(Locale.ROOT, "next throws aim at %s", goals.high() > goals.low()
+                ? String.format(Locale.ROOT, "%.2f-%.2f m (now %.2f m)", goals.low(), goals.high(), goals.current())
+                : String.format(Locale.ROOT, "%.2f m", goals.current()));
+    }
+}

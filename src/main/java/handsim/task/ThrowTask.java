@@ -1,0 +1,55 @@
+package handsim.task;
+
+import handsim.control.ThrowParameters;
+import handsim.math.Vec3;
+import handsim.sim.Simulator;
+
+/**
+ * One of the paper's tasks (sec. 4): what each throw aims at, the nominal (hand-tuned) throw for
+ * it, how a loop is scored and what counts as success. The goal is part of the learner's state
+ * (sec. 3.7: "we embed the goal to the state vector"). A task is stateful over an episode (its
+ * current goal) and used by one thread at a time.
+ */
+public interface ThrowTask {
+
+    /** {@code height}, {@code box} or {@code flip}. */
+    String name();
+
+    /** Number of goal entries appended to the state. */
+    int goalSize();
+
+    /**
+     * Begins an episode in a world that was just reset: draws the episode's goals from
+     * {@code seed} and adds the task's scenery (the box) to {@code sim}.
+     */
+    void start(Simulator sim, long seed);
+
+    /** The goal of the next throw (or of the throw in progress, until {@link #advance}), as state entries. */
+    double[] goal();
+
+    /** A throw was just made: the following one aims at its own goal. */
+    void advance();
+
+    /** The hand-tuned throw parameters for the current goal (the nominal controller's THROW). */
+    ThrowParameters nominalThrow();
+
+    /** The reward of a finished throw loop (loop index >= 1): the paper's eq. (5), (6) or (7). */
+    double reward(LoopRecord loop);
+
+    /** Whether a finished throw loop did what the task asks (and the object was caught). */
+    boolean success(LoopRecord loop);
+
+    /** The current goal, for drawing. */
+    Goal drawing();
+
+    /** The apex height the current throw aims at, for the loop record (NaN without a height goal). */
+    default double targetHeight() {
+        return Double.NaN;
+    }
+
+    /**
+     * Moves the goal by {@code delta} (m, world) on a watcher's request and says what happened in
+     * one line; a task ignores the parts it has no use for.
+     */
+    String moveGoal(Vec3 delta);
+}
