@@ -19,9 +19,42 @@ import java.util.List;
 public final class Kinematics {
 
     private final HandModel model;
+    /** Unit axis of every DOF in its parent frame, 3 per DOF. */
+    private final double[] axes;
+    /** Per joint: the basis its rotation is decomposed in (b0, b1, b2; 9 values), null for hinges. */
+    private final double[][] bases;
+    /** Per ball joint: the sign s making (a0, a1, s a2) right-handed. */
+    private final double[] ballSign;
 
     public Kinematics(HandModel model) {
         this.model = model;
+        axes = new double[3 * model.dofCount()];
+        for (Dof d : model.dofs()) {
+            d.axis().into(axes, 3 * d.index());
+        }
+        bases = new double[model.joints().size()][];
+        ballSign = new double[model.joints().size()];
+        for (Joint j : model.joints()) {
+            int first = j.firstDof();
+            Vec3 a0 = axis(first);
+            if (j.type() == JointType.UNIVERSAL) {
+                Vec3 a1 = axis(first + 1);
+                bases[j.index()] = basis(a0, a1, a0.cross(a1));
+            } else if (j.type() == JointType.BALL) {
+                Vec3 a1 = axis(first + 1), a2 = axis(first + 2);
+                double sign = Math.signum(a0.cross(a1).dot(a2));
+                ballSign[j.index()] = sign;
+                bases[j.index()] = basis(a0, a1, a2.times(sign));
+            }
+        }
+    }
+
+    private static double[] basis(Vec3 b0, Vec3 b1, Vec3 b2) {
+        double[] b = new double[9];
+        b0.into(b, 0);
+        b1.into(b, 3);
+        b2.into(b, 6);
+        return b;
     }
 
     public HandModel model() {
@@ -73,30 +106,33 @@ public final class Kinematics {
      * can produce; for others (constraint drift) it returns the nearest Euler angles.
      */
     public void decompose(Joint j, Quat relative, double[] q) {
+        decompose(j, relative.w(), relative.x(), relative.y(), relative.z(), q);
+    }
+
+    /** {@link #decompose(Joint, Quat, double[])} for the relative rotation (w, x, y, z), without allocating. */
+    public void decompose(Joint j, double w, double x, double y, double z, double[] q) {
         int first = j.firstDof();
-        Vec3 a0 = axis(first);
         switch (j.type()) {
             case HINGE -> {
                 // twist angle about a0: 2 atan2(v . a, w)
-                double s = relative.x() * a0.x() + relative.y() * a0.y() + relative.z() * a0.z();
-                q[first] = wrap(2 * Math.atan2(s, relative.w()));
+                int a = 3 * first;
+                double s = x * axes[a] + y * axes[a + 1] + z * axes[a + 2];
+                q[first] = wrap(2 * Math.atan2(s, w));
             }
             case UNIVERSAL -> {
                 // R = R(a0, q0) R(a1, q1): in the basis (a0, a1, a0 x a1) this is Rx(q0) Ry(q1)
-                Vec3 a1 = axis(first + 1);
-                double[] m = inBasis(relative, a0, a1, a0.cross(a1));
-                q[first] = Math.atan2(m[7], m[4]);
-                q[first + 1] = Math.atan2(m[2], m[0]);
+                double[] b = bases[j.index()];
+                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1), inBasis(w, x, y, z, b, 1, 1));
+                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2), inBasis(w, x, y, z, b, 0, 0));
             }
             case BALL -> {
                 // R = R(a0, q0) R(a1, q1) R(a2, q2): in the basis (a0, a1, s a2) with s making it
                 // right-handed this is Rx(q0) Ry(q1) Rz(s q2)
-                Vec3 a1 = axis(first + 1), a2 = axis(first + 2);
-                double sign = Math.signum(a0.cross(a1).dot(a2));
-                double[] m = inBasis(relative, a0, a1, a2.times(sign));
-                q[first] = Math.atan2(-m[5], m[8]);
-                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, m[2])));
-                q[first + 2] = sign * Math.atan2(-m[1], m[0]);
+                double[] b = bases[j.index()];
+                double sign = ballSign[j.index()];
+                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2), inBasis(w, x, y, z, b, 2, 2));
+                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2))));
+                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1), inBasis(w, x, y, z, b, 0, 0));
             }
         }
     }
@@ -107,25 +143,50 @@ public final class Kinematics {
      * {@code w_i} (exactly for hinges and universal joints, by Cramer's rule for ball joints).
      */
     public void rates(Joint j, double[] q, Vec3 omega, double[] qd) {
+        rates(j, q, omega.x(), omega.y(), omega.z(), qd);
+    }
+
+    /** {@link #rates(Joint, double[], Vec3, double[])} for omega = (ox, oy, oz), without allocating. */
+    public void rates(Joint j, double[] q, double ox, double oy, double oz, double[] qd) {
         int first = j.firstDof();
-        Vec3 w0 = axis(first);
+        int a0 = 3 * first;
+        double w0x = axes[a0], w0y = axes[a0 + 1], w0z = axes[a0 + 2];
+        // omega . w0
+        double dot0 = ox * w0x + oy * w0y + oz * w0z;
         if (j.type() == JointType.HINGE) {
-            qd[first] = omega.dot(w0);
+            qd[first] = dot0;
             return;
         }
-        Quat r0 = Quat.fromAxisAngle(w0, q[first]);
-        Vec3 w1 = r0.rotate(axis(first + 1));
+        // w1 = R(a0, q0) a1
+        double h0 = 0.5 * q[first], s0 = Math.sin(h0);
+        double r0w = Math.cos(h0), r0x = w0x * s0, r0y = w0y * s0, r0z = w0z * s0;
+        int a1 = a0 + 3;
+        double[] w1 = rotated(r0w, r0x, r0y, r0z, axes[a1], axes[a1 + 1], axes[a1 + 2]);
+        double w1x = w1[0], w1y = w1[1], w1z = w1[2];
         if (j.type() == JointType.UNIVERSAL) {
             // w0 and w1 stay perpendicular for a Cardan joint
-            qd[first] = omega.dot(w0);
-            qd[first + 1] = omega.dot(w1);
+            qd[first] = dot0;
+            qd[first + 1] = ox * w1x + oy * w1y + oz * w1z;
             return;
         }
-        Vec3 w2 = r0.mul(Quat.fromAxisAngle(axis(first + 1), q[first + 1])).rotate(axis(first + 2));
-        double det = w0.dot(w1.cross(w2));
-        qd[first] = omega.dot(w1.cross(w2)) / det;
-        qd[first + 1] = w0.dot(omega.cross(w2)) / det;
-        qd[first + 2] = w0.dot(w1.cross(omega)) / det;
+        // w2 = R(a0, q0) R(a1, q1) a2
+        double h1 = 0.5 * q[first + 1], s1 = Math.sin(h1);
+        double fw = Math.cos(h1), fx = axes[a1] * s1, fy = axes[a1 + 1] * s1, fz = axes[a1 + 2] * s1;
+        double rw = r0w * fw - r0x * fx - r0y * fy - r0z * fz;
+        double rx = r0w * fx + r0x * fw + r0y * fz - r0z * fy;
+        double ry = r0w * fy - r0x * fz + r0y * fw + r0z * fx;
+        double rz = r0w * fz + r0x * fy - r0y * fx + r0z * fw;
+        int a2 = a1 + 3;
+        double[] w2 = rotated(rw, rx, ry, rz, axes[a2], axes[a2 + 1], axes[a2 + 2]);
+        double w2x = w2[0], w2y = w2[1], w2z = w2[2];
+        // Cramer's rule on omega = qd0 w0 + qd1 w1 + qd2 w2
+        double cx = w1y * w2z - w1z * w2y, cy = w1z * w2x - w1x * w2z, cz = w1x * w2y - w1y * w2x;
+        double det = w0x * cx + w0y * cy + w0z * cz;
+        qd[first] = (ox * cx + oy * cy + oz * cz) / det;
+        double ex = oy * w2z - oz * w2y, ey = oz * w2x - ox * w2z, ez = ox * w2y - oy * w2x;
+        qd[first + 1] = (w0x * ex + w0y * ey + w0z * ez) / det;
+        double gx = w1y * oz - w1z * oy, gy = w1z * ox - w1x * oz, gz = w1x * oy - w1y * ox;
+        qd[first + 2] = (w0x * gx + w0y * gy + w0z * gz) / det;
     }
 
     /**
@@ -134,14 +195,41 @@ public final class Kinematics {
      * {@code tau_i w_i} is the generalized force of DOF i.
      */
     public Vec3[] worldAxes(Joint j, Quat parentRotation, double[] q) {
+        double[] p = {parentRotation.w(), parentRotation.x(), parentRotation.y(), parentRotation.z()};
+        double[] w = new double[3 * model.dofCount()];
+        worldAxes(j, p, 0, q, w);
         Vec3[] out = new Vec3[j.dofCount()];
-        Quat r = parentRotation;
-        for (int s = 0; s < j.dofCount(); s++) {
-            Dof d = model.dofs().get(j.firstDof() + s);
-            out[s] = r.rotate(d.axis());
-            r = r.mul(Quat.fromAxisAngle(d.axis(), q[d.index()]));
+        for (int s = 0; s < out.length; s++) {
+            out[s] = Vec3.of(w, 3 * (j.firstDof() + s));
         }
         return out;
+    }
+
+    /**
+     * {@link #worldAxes(Joint, Quat, double[])} without allocating: the parent's world rotation
+     * is {@code parent[p..p+3]} (w, x, y, z) and axis i of the joint is written to
+     * {@code out[3 d .. 3 d + 2]}, d its DOF index.
+     */
+    public void worldAxes(Joint j, double[] parent, int p, double[] q, double[] out) {
+        double rw = parent[p], rx = parent[p + 1], ry = parent[p + 2], rz = parent[p + 3];
+        int n = j.dofCount();
+        for (int s = 0; s < n; s++) {
+            int d = j.firstDof() + s;
+            Rotations.rotate(rw, rx, ry, rz, axes, 3 * d, out, 3 * d);
+            if (s + 1 < n) {
+                // r = r R(a_s, q_s)
+                double h = 0.5 * q[d], sn = Math.sin(h);
+                double fw = Math.cos(h), fx = axes[3 * d] * sn, fy = axes[3 * d + 1] * sn, fz = axes[3 * d + 2] * sn;
+                double nw = rw * fw - rx * fx - ry * fy - rz * fz;
+                double nx = rw * fx + rx * fw + ry * fz - rz * fy;
+                double ny = rw * fy - rx * fz + ry * fw + rz * fx;
+                double nz = rw * fz + rx * fy - ry * fx + rz * fw;
+                rw = nw;
+                rx = nx;
+                ry = ny;
+                rz = nz;
+            }
+        }
     }
 
     /**
@@ -189,17 +277,24 @@ public final class Kinematics {
         return model.dofs().get(dof).axis();
     }
 
-    /** Row-major 3x3 matrix of rotation {@code r} expressed in the orthonormal basis (b0, b1, b2). */
-    private static double[] inBasis(Quat r, Vec3 b0, Vec3 b1, Vec3 b2) {
-        Vec3[] b = {b0, b1, b2};
-        double[] m = new double[9];
-        for (int col = 0; col < 3; col++) {
-            Vec3 img = r.rotate(b[col]);
-            for (int row = 0; row < 3; row++) {
-                m[row * 3 + col] = b[row].dot(img);
-            }
-        }
-        return m;
+    /**
+     * Entry (row, col) of the rotation (w, x, y, z) expressed in the orthonormal basis {@code b}
+     * (b0, b1, b2 in a row): {@code b_row . R b_col}.
+     */
+    private static double inBasis(double w, double x, double y, double z, double[] b, int row, int col) {
+        double[] img = rotated(w, x, y, z, b[3 * col], b[3 * col + 1], b[3 * col + 2]);
+        return b[3 * row] * img[0] + b[3 * row + 1] * img[1] + b[3 * row + 2] * img[2];
+    }
+
+    /**
+     * v rotated by the quaternion (w, x, y, z), as {@link Quat#rotate}. The small array does not
+     * escape its (inlined) callers, so the JIT replaces it by registers.
+     */
+    private static double[] rotated(double w, double x, double y, double z, double vx, double vy, double vz) {
+        double[] v = {vx, vy, vz};
+        double[] out = new double[3];
+        Rotations.rotate(w, x, y, z, v, 0, out, 0);
+        return out;
     }
 
     /** Wraps an angle into (-pi, pi]. */

@@ -2,6 +2,7 @@ package handsim.sim.ode;
 
 import handsim.kin.Frame;
 import handsim.kin.Kinematics;
+import handsim.kin.Rotations;
 import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.model.Body;
@@ -77,6 +78,18 @@ public final class OdeSimulator implements Simulator {
     private final double[] q;
     private final double[] qd;
     private final double[] tau;
+    /** Per joint: parent body index, or -1 for the fixed torso. */
+    private final int[] parentOf;
+    /** World rotation (w, x, y, z) of every body after the last step, then the torso's (identity) at index n. */
+    private final double[] rotations;
+    /** World angular velocity of every body after the last step, then the torso's (zero). */
+    private final double[] angularVels;
+    /** World axis of every DOF after the last step (3 per DOF): torques and limit motors act about these. */
+    private final double[] worldAxes;
+    /** Scratch: a joint's relative rotation, and the relative angular velocity in the parent frame. */
+    private final double[] relative = new double[4];
+    private final double[] omegaWorld = new double[3];
+    private final double[] omegaParent = new double[3];
     private final ContactReport contacts = new ContactReport();
     private final DContactBuffer contactBuffer;
     private final double[] handErp;
@@ -133,6 +146,14 @@ public final class OdeSimulator implements Simulator {
         q = new double[model.dofCount()];
         qd = new double[model.dofCount()];
         tau = new double[model.dofCount()];
+        parentOf = new int[model.joints().size()];
+        for (Joint j : model.joints()) {
+            parentOf[j.index()] = j.isRoot() ? -1 : j.parent();
+        }
+        rotations = new double[4 * (n + 1)];
+        angularVels = new double[3 * (n + 1)];
+        rotations[4 * n] = 1;
+        worldAxes = new double[3 * model.dofCount()];
         reset(q, 0);
     }
 
@@ -359,18 +380,17 @@ public final class OdeSimulator implements Simulator {
     /** eq. (3): each DOF's torque about its current world axis, equal and opposite on the two bodies. */
     private void applyJointTorques() {
         for (Joint j : model.joints()) {
-            DBody parent = parentBody(j);
-            Vec3[] axes = kin.worldAxes(j, rotation(parent), q);
             double tx = 0, ty = 0, tz = 0;
-            for (int s = 0; s < axes.length; s++) {
-                double t = tau[j.firstDof() + s];
-                tx += t * axes[s].x();
-                ty += t * axes[s].y();
-                tz += t * axes[s].z();
+            for (int s = 0; s < j.dofCount(); s++) {
+                int d = j.firstDof() + s;
+                double t = tau[d];
+                tx += t * worldAxes[3 * d];
+                ty += t * worldAxes[3 * d + 1];
+                tz += t * worldAxes[3 * d + 2];
             }
             bodies[j.child()].addTorque(tx, ty, tz);
             if (!j.isRoot()) {
-                parent.addTorque(-tx, -ty, -tz);
+                bodies[j.parent()].addTorque(-tx, -ty, -tz);
             }
         }
     }
@@ -382,24 +402,42 @@ public final class OdeSimulator implements Simulator {
             if (m == null) {
                 continue;
             }
-            Vec3[] axes = kin.worldAxes(j, rotation(parentBody(j)), q);
             for (int s = 0; s < 3; s++) {
-                m.setAxis(s, 0, -axes[s].x(), -axes[s].y(), -axes[s].z());
-                m.setAngle(s, q[j.firstDof() + s]);
+                int d = j.firstDof() + s;
+                m.setAxis(s, 0, -worldAxes[3 * d], -worldAxes[3 * d + 1], -worldAxes[3 * d + 2]);
+                m.setAngle(s, q[d]);
             }
         }
     }
 
-    /** Joint angles and rates from the bodies' orientations and angular velocities. */
+    /**
+     * Joint angles and rates from the bodies' orientations and angular velocities, and the DOFs'
+     * world axes for the next step's torques and limit motors.
+     */
     private void updateJointState() {
+        int n = bodies.length;
+        for (int b = 0; b < n; b++) {
+            DQuaternionC r = bodies[b].getQuaternion();
+            rotations[4 * b] = r.get0();
+            rotations[4 * b + 1] = r.get1();
+            rotations[4 * b + 2] = r.get2();
+            rotations[4 * b + 3] = r.get3();
+            DVector3C w = bodies[b].getAngularVel();
+            angularVels[3 * b] = w.get0();
+            angularVels[3 * b + 1] = w.get1();
+            angularVels[3 * b + 2] = w.get2();
+        }
         for (Joint j : model.joints()) {
-            DBody parent = parentBody(j);
-            DBody child = bodies[j.child()];
-            Quat rp = rotation(parent);
-            Quat rc = rotation(child);
-            kin.decompose(j, rp.conjugate().mul(rc), q);
-            Vec3 omega = rp.inverseRotate(vec(child.getAngularVel()).minus(vec(parent.getAngularVel())));
-            kin.rates(j, q, omega, qd);
+            int p = parentOf[j.index()] < 0 ? n : parentOf[j.index()];
+            int c = j.child();
+            Rotations.conjMul(rotations, 4 * p, rotations, 4 * c, relative, 0);
+            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q);
+            for (int i = 0; i < 3; i++) {
+                omegaWorld[i] = angularVels[3 * c + i] - angularVels[3 * p + i];
+            }
+            Rotations.inverseRotate(rotations, 4 * p, omegaWorld, 0, omegaParent, 0);
+            kin.rates(j, q, omegaParent[0], omegaParent[1], omegaParent[2], qd);
+            kin.worldAxes(j, rotations, 4 * p, q, worldAxes);
         }
     }
 
