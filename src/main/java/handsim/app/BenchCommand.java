@@ -74,7 +74,7 @@ final class BenchCommand implements Callable<Integer> {
     private static final double THROW_HEIGHT = 1.2;
 
     /** What one worker measured. */
-    private record Run(long steps, double wallS, double cpuS, long bytes, int episodes, int loopsCaught,
+    private record Run(long steps, double wallS, double cpuS, long bytes, long engineBytes, int episodes, int loopsCaught,
             int firstCatches, boolean held, double ballToPalm) {
     }
 
@@ -187,7 +187,7 @@ final class BenchCommand implements Callable<Integer> {
         while (true) {
             if (meter == null && done >= warmSteps) {
                 await(start);
-                meter = new Meter(done);
+                meter = new Meter(sim, done);
                 episodes = 1;
                 caught = 0;
                 firstCatches = 0;
@@ -218,7 +218,7 @@ final class BenchCommand implements Callable<Integer> {
             scenario.step();
         }
         await(start);
-        Meter meter = new Meter(0);
+        Meter meter = new Meter(sim, 0);
         for (long i = 0; i < measuredSteps; i++) {
             scenario.step();
         }
@@ -233,18 +233,30 @@ final class BenchCommand implements Callable<Integer> {
     private static final class Meter {
         private static final com.sun.management.ThreadMXBean THREADS =
                 (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        final Simulator sim;
         final long steps0;
-        final long t0 = System.nanoTime();
-        final long cpu0 = THREADS.getCurrentThreadCpuTime();
-        final long bytes0 = THREADS.getCurrentThreadAllocatedBytes();
+        final long engineBytes0;
+        final long t0;
+        final long cpu0;
+        final long bytes0;
 
-        Meter(long steps0) {
+        /** Starts measuring, and counting the engine's own allocation apart. */
+        Meter(Simulator sim, long steps0) {
+            this.sim = sim;
             this.steps0 = steps0;
+            sim.countEngineAllocation(true);
+            engineBytes0 = sim.engineAllocatedBytes();
+            t0 = System.nanoTime();
+            cpu0 = THREADS.getCurrentThreadCpuTime();
+            bytes0 = THREADS.getCurrentThreadAllocatedBytes();
         }
 
         Run finish(long steps, int episodes, int caught, int firstCatches, boolean held, double ballToPalm) {
-            return new Run(steps - steps0, (System.nanoTime() - t0) / 1e9, (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9,
-                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, episodes, caught, firstCatches, held, ballToPalm);
+            Run r = new Run(steps - steps0, (System.nanoTime() - t0) / 1e9, (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9,
+                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, sim.engineAllocatedBytes() - engineBytes0,
+                    episodes, caught, firstCatches, held, ballToPalm);
+            sim.countEngineAllocation(false);
+            return r;
         }
     }
 
@@ -264,7 +276,7 @@ final class BenchCommand implements Callable<Integer> {
      * wall time (all start together), steps per CPU second is less sensitive to other load.
      */
     private static ObjectNode summarize(List<Run> runs, SimConfig config) {
-        long steps = 0, bytes = 0;
+        long steps = 0, bytes = 0, engineBytes = 0;
         double wall = 0, cpu = 0;
         int episodes = 0, caught = 0, firstCatches = 0;
         boolean held = true;
@@ -272,6 +284,7 @@ final class BenchCommand implements Callable<Integer> {
         for (Run r : runs) {
             steps += r.steps();
             bytes += r.bytes();
+            engineBytes += r.engineBytes();
             wall = Math.max(wall, r.wallS());
             cpu += r.cpuS();
             episodes += r.episodes();
@@ -288,6 +301,8 @@ final class BenchCommand implements Callable<Integer> {
         o.put("realtime_factor", steps / wall * config.timeStep());
         o.put("steps_per_cpu_s", steps / cpu);
         o.put("bytes_per_step", (double) bytes / steps);
+        o.put("engine_bytes_per_step", (double) engineBytes / steps);
+        o.put("handsim_bytes_per_step", (double) (bytes - engineBytes) / steps);
         o.put("allocation_mb_per_s", bytes / wall / 1e6);
         o.put("episodes", episodes);
         o.put("loops_caught", caught);
@@ -301,9 +316,10 @@ final class BenchCommand implements Callable<Integer> {
 
     private static void print(String label, ObjectNode o) {
         System.out.printf("  %s: %d steps in %.2f s: %.0f steps/s, %.2fx real time (%.0f steps per CPU second), "
-                + "%.0f bytes/step; %d episodes, %d catches%n", label, o.get("steps").asLong(), o.get("wall_s").asDouble(),
-                o.get("steps_per_s").asDouble(), o.get("realtime_factor").asDouble(), o.get("steps_per_cpu_s").asDouble(),
-                o.get("bytes_per_step").asDouble(), o.get("episodes").asInt(), o.get("loops_caught").asInt());
+                + "%.0f bytes/step (ode4j %.0f, handsim %.0f); %d episodes, %d catches%n", label, o.get("steps").asLong(),
+                o.get("wall_s").asDouble(), o.get("steps_per_s").asDouble(), o.get("realtime_factor").asDouble(),
+                o.get("steps_per_cpu_s").asDouble(), o.get("bytes_per_step").asDouble(), o.get("engine_bytes_per_step").asDouble(),
+                o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(), o.get("loops_caught").asInt());
     }
 
     private static String formatShares(Map<String, Double> shares) {

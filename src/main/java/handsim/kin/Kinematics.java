@@ -18,6 +18,9 @@ import java.util.List;
  */
 public final class Kinematics {
 
+    /** Size of the scratch buffer the allocation-free methods take. */
+    public static final int WORK = 6;
+
     private final HandModel model;
     /** Unit axis of every DOF in its parent frame, 3 per DOF. */
     private final double[] axes;
@@ -106,11 +109,14 @@ public final class Kinematics {
      * can produce; for others (constraint drift) it returns the nearest Euler angles.
      */
     public void decompose(Joint j, Quat relative, double[] q) {
-        decompose(j, relative.w(), relative.x(), relative.y(), relative.z(), q);
+        decompose(j, relative.w(), relative.x(), relative.y(), relative.z(), q, new double[WORK]);
     }
 
-    /** {@link #decompose(Joint, Quat, double[])} for the relative rotation (w, x, y, z), without allocating. */
-    public void decompose(Joint j, double w, double x, double y, double z, double[] q) {
+    /**
+     * {@link #decompose(Joint, Quat, double[])} for the relative rotation (w, x, y, z), without
+     * allocating: {@code work} is caller-owned scratch of {@link #WORK} values.
+     */
+    public void decompose(Joint j, double w, double x, double y, double z, double[] q, double[] work) {
         int first = j.firstDof();
         switch (j.type()) {
             case HINGE -> {
@@ -122,17 +128,17 @@ public final class Kinematics {
             case UNIVERSAL -> {
                 // R = R(a0, q0) R(a1, q1): in the basis (a0, a1, a0 x a1) this is Rx(q0) Ry(q1)
                 double[] b = bases[j.index()];
-                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1), inBasis(w, x, y, z, b, 1, 1));
-                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2), inBasis(w, x, y, z, b, 0, 0));
+                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1, work), inBasis(w, x, y, z, b, 1, 1, work));
+                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2, work), inBasis(w, x, y, z, b, 0, 0, work));
             }
             case BALL -> {
                 // R = R(a0, q0) R(a1, q1) R(a2, q2): in the basis (a0, a1, s a2) with s making it
                 // right-handed this is Rx(q0) Ry(q1) Rz(s q2)
                 double[] b = bases[j.index()];
                 double sign = ballSign[j.index()];
-                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2), inBasis(w, x, y, z, b, 2, 2));
-                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2))));
-                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1), inBasis(w, x, y, z, b, 0, 0));
+                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2, work), inBasis(w, x, y, z, b, 2, 2, work));
+                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2, work))));
+                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1, work), inBasis(w, x, y, z, b, 0, 0, work));
             }
         }
     }
@@ -143,11 +149,14 @@ public final class Kinematics {
      * {@code w_i} (exactly for hinges and universal joints, by Cramer's rule for ball joints).
      */
     public void rates(Joint j, double[] q, Vec3 omega, double[] qd) {
-        rates(j, q, omega.x(), omega.y(), omega.z(), qd);
+        rates(j, q, omega.x(), omega.y(), omega.z(), qd, new double[WORK]);
     }
 
-    /** {@link #rates(Joint, double[], Vec3, double[])} for omega = (ox, oy, oz), without allocating. */
-    public void rates(Joint j, double[] q, double ox, double oy, double oz, double[] qd) {
+    /**
+     * {@link #rates(Joint, double[], Vec3, double[])} for omega = (ox, oy, oz), without
+     * allocating: {@code work} is caller-owned scratch of {@link #WORK} values.
+     */
+    public void rates(Joint j, double[] q, double ox, double oy, double oz, double[] qd, double[] work) {
         int first = j.firstDof();
         int a0 = 3 * first;
         double w0x = axes[a0], w0y = axes[a0 + 1], w0z = axes[a0 + 2];
@@ -161,8 +170,8 @@ public final class Kinematics {
         double h0 = 0.5 * q[first], s0 = Math.sin(h0);
         double r0w = Math.cos(h0), r0x = w0x * s0, r0y = w0y * s0, r0z = w0z * s0;
         int a1 = a0 + 3;
-        double[] w1 = rotated(r0w, r0x, r0y, r0z, axes[a1], axes[a1 + 1], axes[a1 + 2]);
-        double w1x = w1[0], w1y = w1[1], w1z = w1[2];
+        Rotations.rotate(r0w, r0x, r0y, r0z, axes, a1, work, 0);
+        double w1x = work[0], w1y = work[1], w1z = work[2];
         if (j.type() == JointType.UNIVERSAL) {
             // w0 and w1 stay perpendicular for a Cardan joint
             qd[first] = dot0;
@@ -177,8 +186,8 @@ public final class Kinematics {
         double ry = r0w * fy - r0x * fz + r0y * fw + r0z * fx;
         double rz = r0w * fz + r0x * fy - r0y * fx + r0z * fw;
         int a2 = a1 + 3;
-        double[] w2 = rotated(rw, rx, ry, rz, axes[a2], axes[a2 + 1], axes[a2 + 2]);
-        double w2x = w2[0], w2y = w2[1], w2z = w2[2];
+        Rotations.rotate(rw, rx, ry, rz, axes, a2, work, 3);
+        double w2x = work[3], w2y = work[4], w2z = work[5];
         // Cramer's rule on omega = qd0 w0 + qd1 w1 + qd2 w2
         double cx = w1y * w2z - w1z * w2y, cy = w1z * w2x - w1x * w2z, cz = w1x * w2y - w1y * w2x;
         double det = w0x * cx + w0y * cy + w0z * cz;
@@ -196,26 +205,26 @@ public final class Kinematics {
      */
     public Vec3[] worldAxes(Joint j, Quat parentRotation, double[] q) {
         double[] p = {parentRotation.w(), parentRotation.x(), parentRotation.y(), parentRotation.z()};
-        double[] w = new double[3 * model.dofCount()];
-        worldAxes(j, p, 0, q, w);
+        double[] w = new double[3 * j.dofCount()];
+        worldAxes(j, p, 0, q, w, 0);
         Vec3[] out = new Vec3[j.dofCount()];
         for (int s = 0; s < out.length; s++) {
-            out[s] = Vec3.of(w, 3 * (j.firstDof() + s));
+            out[s] = Vec3.of(w, 3 * s);
         }
         return out;
     }
 
     /**
      * {@link #worldAxes(Joint, Quat, double[])} without allocating: the parent's world rotation
-     * is {@code parent[p..p+3]} (w, x, y, z) and axis i of the joint is written to
-     * {@code out[3 d .. 3 d + 2]}, d its DOF index.
+     * is {@code parent[p..p+3]} (w, x, y, z) and the axis of the joint's DOF s is written to
+     * {@code out[o + 3 s .. o + 3 s + 2]}.
      */
-    public void worldAxes(Joint j, double[] parent, int p, double[] q, double[] out) {
+    public void worldAxes(Joint j, double[] parent, int p, double[] q, double[] out, int o) {
         double rw = parent[p], rx = parent[p + 1], ry = parent[p + 2], rz = parent[p + 3];
         int n = j.dofCount();
         for (int s = 0; s < n; s++) {
             int d = j.firstDof() + s;
-            Rotations.rotate(rw, rx, ry, rz, axes, 3 * d, out, 3 * d);
+            Rotations.rotate(rw, rx, ry, rz, axes, 3 * d, out, o + 3 * s);
             if (s + 1 < n) {
                 // r = r R(a_s, q_s)
                 double h = 0.5 * q[d], sn = Math.sin(h);
@@ -281,20 +290,9 @@ public final class Kinematics {
      * Entry (row, col) of the rotation (w, x, y, z) expressed in the orthonormal basis {@code b}
      * (b0, b1, b2 in a row): {@code b_row . R b_col}.
      */
-    private static double inBasis(double w, double x, double y, double z, double[] b, int row, int col) {
-        double[] img = rotated(w, x, y, z, b[3 * col], b[3 * col + 1], b[3 * col + 2]);
-        return b[3 * row] * img[0] + b[3 * row + 1] * img[1] + b[3 * row + 2] * img[2];
-    }
-
-    /**
-     * v rotated by the quaternion (w, x, y, z), as {@link Quat#rotate}. The small array does not
-     * escape its (inlined) callers, so the JIT replaces it by registers.
-     */
-    private static double[] rotated(double w, double x, double y, double z, double vx, double vy, double vz) {
-        double[] v = {vx, vy, vz};
-        double[] out = new double[3];
-        Rotations.rotate(w, x, y, z, v, 0, out, 0);
-        return out;
+    private static double inBasis(double w, double x, double y, double z, double[] b, int row, int col, double[] work) {
+        Rotations.rotate(w, x, y, z, b, 3 * col, work, 0);
+        return Rotations.dot(b, 3 * row, work, 0);
     }
 
     /** Wraps an angle into (-pi, pi]. */

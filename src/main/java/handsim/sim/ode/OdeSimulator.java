@@ -55,6 +55,10 @@ public final class OdeSimulator implements Simulator {
         OdeHelper.initODE2(0);
     }
 
+    /** Per-thread allocation counter, for {@link #countEngineAllocation}. */
+    private static final com.sun.management.ThreadMXBean THREADS =
+            (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+
     /** Speed beyond which the state is considered to have exploded, m/s. */
     private static final double DIVERGED_SPEED = 200;
 
@@ -90,6 +94,7 @@ public final class OdeSimulator implements Simulator {
     private final double[] relative = new double[4];
     private final double[] omegaWorld = new double[3];
     private final double[] omegaParent = new double[3];
+    private final double[] work = new double[Kinematics.WORK];
     private final ContactReport contacts = new ContactReport();
     private final DContactBuffer contactBuffer;
     private final double[] handErp;
@@ -106,6 +111,8 @@ public final class OdeSimulator implements Simulator {
     private long steps;
     private boolean touchesGround;
     private boolean touchesBox;
+    private boolean countEngineBytes;
+    private long engineBytes;
 
     public OdeSimulator(HandModel model, SimConfig config) {
         this.model = model;
@@ -368,9 +375,13 @@ public final class OdeSimulator implements Simulator {
         touchesBox = false;
         applyJointTorques();
         updateLimitMotors();
+        long bytes0 = countEngineBytes ? THREADS.getCurrentThreadAllocatedBytes() : 0;
         collide();
         world.quickStep(config.timeStep());
         contactGroup.empty();
+        if (countEngineBytes) {
+            engineBytes += THREADS.getCurrentThreadAllocatedBytes() - bytes0;
+        }
         time += config.timeStep();
         steps++;
         updateJointState();
@@ -431,13 +442,13 @@ public final class OdeSimulator implements Simulator {
             int p = parentOf[j.index()] < 0 ? n : parentOf[j.index()];
             int c = j.child();
             Rotations.conjMul(rotations, 4 * p, rotations, 4 * c, relative, 0);
-            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q);
+            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q, work);
             for (int i = 0; i < 3; i++) {
                 omegaWorld[i] = angularVels[3 * c + i] - angularVels[3 * p + i];
             }
             Rotations.inverseRotate(rotations, 4 * p, omegaWorld, 0, omegaParent, 0);
-            kin.rates(j, q, omegaParent[0], omegaParent[1], omegaParent[2], qd);
-            kin.worldAxes(j, rotations, 4 * p, q, worldAxes);
+            kin.rates(j, q, omegaParent[0], omegaParent[1], omegaParent[2], qd, work);
+            kin.worldAxes(j, rotations, 4 * p, q, worldAxes, 3 * j.firstDof());
         }
     }
 
@@ -455,6 +466,16 @@ public final class OdeSimulator implements Simulator {
                 throw new SimulationDiverged("object speed " + speed + " m/s at t = " + time + " s");
             }
         }
+    }
+
+    @Override
+    public void countEngineAllocation(boolean on) {
+        countEngineBytes = on;
+    }
+
+    @Override
+    public long engineAllocatedBytes() {
+        return engineBytes;
     }
 
     // ---- collisions -------------------------------------------------------------------------
@@ -597,6 +618,15 @@ public final class OdeSimulator implements Simulator {
         requireObject();
         return new RigidState(vec(object.getPosition()), rotation(object), vec(object.getLinearVel()),
                 vec(object.getAngularVel()));
+    }
+
+    @Override
+    public void objectPosition(double[] out) {
+        requireObject();
+        DVector3C p = object.getPosition();
+        out[0] = p.get0();
+        out[1] = p.get1();
+        out[2] = p.get2();
     }
 
     private void requireObject() {
