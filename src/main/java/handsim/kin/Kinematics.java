@@ -28,12 +28,24 @@ public final class Kinematics {
     private final double[][] bases;
     /** Per ball joint: the sign s making (a0, a1, s a2) right-handed. */
     private final double[] ballSign;
+    /** Per body: its origin relative to its parent's origin in the zero configuration (3 per body). */
+    private final double[] offsets;
+    /** Per body: the bodies from the root down to it. */
+    private final int[][] chains;
 
     public Kinematics(HandModel model) {
         this.model = model;
         axes = new double[3 * model.dofCount()];
         for (Dof d : model.dofs()) {
             d.axis().into(axes, 3 * d.index());
+        }
+        offsets = new double[3 * model.bodyCount()];
+        chains = new int[model.bodyCount()][];
+        for (Body b : model.bodies()) {
+            Vec3 parentOrigin = b.parent() < 0 ? Vec3.ZERO : model.bodies().get(b.parent()).origin();
+            b.origin().minus(parentOrigin).into(offsets, 3 * b.index());
+            List<Joint> chain = model.chainTo(b.index());
+            chains[b.index()] = chain.stream().mapToInt(Joint::child).toArray();
         }
         bases = new double[model.joints().size()][];
         ballSign = new double[model.joints().size()];
@@ -100,7 +112,74 @@ public final class Kinematics {
 
     /** World frame of a site. */
     public Frame siteFrame(Site site, double[] q) {
-        return bodyFrame(site.body(), q).compose(new Frame(site.position(), site.orientation()));
+        double[] t = new double[SITE_WORK];
+        siteFrame(site, q, t);
+        return new Frame(new Vec3(t[0], t[1], t[2]), new Quat(t[3], t[4], t[5], t[6]));
+    }
+
+    /** Work values {@link #siteFrame(Site, double[], double[])} needs. */
+    private static final int SITE_WORK = 32;
+
+    /**
+     * The site's world frame into {@code t[0..6]} (origin, then rotation w, x, y, z), computed
+     * as {@link #bodyFrame} and {@link Frame#compose} do, operation for operation; {@code t}
+     * holds {@link #SITE_WORK} values.
+     */
+    private void siteFrame(Site site, double[] q, double[] t) {
+        // body frame at t[7..13], from the identity down the chain
+        identityFrame(t, 7);
+        for (int b : chains[site.body()]) {
+            advance(b, q, t, 7, t, 14);
+        }
+        // compose with the site's fixed frame
+        site.position().into(t, 14);
+        Rotations.rotate(t, 10, t, 14, t, 17);
+        t[0] = t[7] + t[17];
+        t[1] = t[8] + t[18];
+        t[2] = t[9] + t[19];
+        Quat so = site.orientation();
+        t[14] = so.w();
+        t[15] = so.x();
+        t[16] = so.y();
+        t[17] = so.z();
+        Rotations.mul(t, 10, t, 14, t, 3);
+    }
+
+    private static void identityFrame(double[] f, int o) {
+        f[o] = 0;
+        f[o + 1] = 0;
+        f[o + 2] = 0;
+        f[o + 3] = 1;
+        f[o + 4] = 0;
+        f[o + 5] = 0;
+        f[o + 6] = 0;
+    }
+
+    /**
+     * Moves the frame {@code f[o..o+6]} (a body's parent frame) to body {@code b}'s frame, as
+     * {@code frameFromParent} does; uses {@code t[k..k+14]}.
+     */
+    private void advance(int b, double[] q, double[] f, int o, double[] t, int k) {
+        // origin: parent origin + parent rotation applied to the offset
+        Rotations.rotate(f, o + 3, offsets, 3 * b, t, k);
+        t[k] = f[o] + t[k];
+        t[k + 1] = f[o + 1] + t[k + 1];
+        t[k + 2] = f[o + 2] + t[k + 2];
+        // joint rotation R(a0, q0) R(a1, q1) ..., from the identity
+        t[k + 3] = 1;
+        t[k + 4] = 0;
+        t[k + 5] = 0;
+        t[k + 6] = 0;
+        Joint j = model.joints().get(model.bodies().get(b).joint());
+        for (int s = 0; s < j.dofCount(); s++) {
+            int d = j.firstDof() + s;
+            Rotations.fromAxisAngle(axes, 3 * d, q[d], t, k + 7);
+            Rotations.mul(t, k + 3, t, k + 7, t, k + 11);
+            System.arraycopy(t, k + 11, t, k + 3, 4);
+        }
+        Rotations.mul(f, o + 3, t, k + 3, t, k + 7);
+        System.arraycopy(t, k + 7, f, o + 3, 4);
+        System.arraycopy(t, k, f, o, 3);
     }
 
     /**
@@ -248,28 +327,43 @@ public final class Kinematics {
      */
     public void siteJacobian(Site site, double[] q, int[] dofs, double[] jac) {
         java.util.Arrays.fill(jac, 0);
-        Vec3 p = siteFrame(site, q).origin();
-        List<Joint> chain = model.chainTo(site.body());
+        double[] t = new double[SITE_WORK + 40];
+        // the site's origin p at t[0..2]
+        siteFrame(site, q, t);
         int n = dofs.length;
-        Frame parent = Frame.IDENTITY;
-        for (Joint j : chain) {
-            Body child = model.bodies().get(j.child());
-            Vec3 anchor = j.isRoot() ? j.anchor() : parent.pointToWorld(child.origin().minus(model.bodies().get(j.parent()).origin()));
-            Vec3[] w = worldAxes(j, parent.rotation(), q);
-            for (int s = 0; s < w.length; s++) {
+        // the parent frame of each joint on the chain at F = t[32..38]; scratch from t[39]
+        final int f = SITE_WORK, anchor = f + 7, axesAt = f + 10, tmp = f + 19;
+        identityFrame(t, f);
+        for (int b : chains[site.body()]) {
+            Joint j = model.joints().get(model.bodies().get(b).joint());
+            if (j.isRoot()) {
+                j.anchor().into(t, anchor);
+            } else {
+                Rotations.rotate(t, f + 3, offsets, 3 * b, t, tmp);
+                t[anchor] = t[f] + t[tmp];
+                t[anchor + 1] = t[f + 1] + t[tmp + 1];
+                t[anchor + 2] = t[f + 2] + t[tmp + 2];
+            }
+            worldAxes(j, t, f + 3, q, t, axesAt);
+            for (int s = 0; s < j.dofCount(); s++) {
                 int col = indexOf(dofs, j.firstDof() + s);
                 if (col < 0) {
                     continue;
                 }
-                Vec3 lin = w[s].cross(p.minus(anchor));
-                jac[col] = lin.x();
-                jac[n + col] = lin.y();
-                jac[2 * n + col] = lin.z();
-                jac[3 * n + col] = w[s].x();
-                jac[4 * n + col] = w[s].y();
-                jac[5 * n + col] = w[s].z();
+                // linear part: w x (p - anchor)
+                int w = axesAt + 3 * s;
+                t[tmp] = t[0] - t[anchor];
+                t[tmp + 1] = t[1] - t[anchor + 1];
+                t[tmp + 2] = t[2] - t[anchor + 2];
+                Rotations.cross(t, w, t, tmp, t, tmp + 3);
+                jac[col] = t[tmp + 3];
+                jac[n + col] = t[tmp + 4];
+                jac[2 * n + col] = t[tmp + 5];
+                jac[3 * n + col] = t[w];
+                jac[4 * n + col] = t[w + 1];
+                jac[5 * n + col] = t[w + 2];
             }
-            parent = frameFromParent(child, parent, q);
+            advance(b, q, t, f, t, tmp);
         }
     }
 
