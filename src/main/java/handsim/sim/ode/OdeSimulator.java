@@ -59,6 +59,12 @@ public final class OdeSimulator implements Simulator {
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
 
+    /**
+     * Bounding spheres are grown by this much (m) so that rounding can never hide a touching
+     * pair: the margin only decides which pairs the exact colliders test.
+     */
+    private static final double BOUND_MARGIN = 1e-3;
+
     /** Speed beyond which the state is considered to have exploded, m/s. */
     private static final double DIVERGED_SPEED = 200;
 
@@ -72,7 +78,16 @@ public final class OdeSimulator implements Simulator {
     private final SimConfig config;
     private final Kinematics kin;
     private final DWorld world;
-    private final DSpace handSpace;
+    /** The hand/arm geoms in model order (body, then shape), in no space: {@link #collide} pairs them itself. */
+    private final DGeom[] handGeoms;
+    /** Per hand geom: its body, and its bounding sphere (centre relative to the body's centre of mass, body frame; radius). */
+    private final int[] handGeomBody;
+    private final double[] handGeomCentre;
+    private final double[] handGeomRadius;
+    /** Per object geom: bounding sphere centre (object frame) and radius. */
+    private final List<double[]> objectBounds = new ArrayList<>();
+    /** Scratch for the world centres of bounding spheres. */
+    private final double[] centre = new double[6];
     private final DJointGroup contactGroup;
     private final DPlane ground;
     private final DBody torso;
@@ -82,6 +97,8 @@ public final class OdeSimulator implements Simulator {
     private final double[] q;
     private final double[] qd;
     private final double[] tau;
+    /** The model's joints (an array: the per-step loops allocate no iterator). */
+    private final Joint[] joints;
     /** Per joint: parent body index, or -1 for the fixed torso. */
     private final int[] parentOf;
     /** World rotation (w, x, y, z) of every body after the last step, then the torso's (identity) at index n. */
@@ -95,6 +112,7 @@ public final class OdeSimulator implements Simulator {
     private final double[] omegaWorld = new double[3];
     private final double[] omegaParent = new double[3];
     private final double[] work = new double[Kinematics.WORK];
+    private final DVector3 motorAxis = new DVector3();
     private final ContactReport contacts = new ContactReport();
     private final DContactBuffer contactBuffer;
     private final double[] handErp;
@@ -102,7 +120,10 @@ public final class OdeSimulator implements Simulator {
     private final List<DGeom> objectGeoms = new ArrayList<>();
     private final List<DGeom> boxes = new ArrayList<>();
     private final List<WorldSnapshot.StaticBox> boxSpecs = new ArrayList<>();
-    private final DGeom.DNearCallback nearCallback = (data, o1, o2) -> collidePair(o1, o2);
+    /** Test bounding spheres before the exact colliders (off only in tests, to check it loses no contact). */
+    private boolean broadPhase = true;
+    /** The object's rotation (w, x, y, z) while colliding. */
+    private final double[] objectRotation = new double[4];
     private DBody object;
     private ObjectSpec objectSpec;
     private double staticErp;
@@ -130,7 +151,6 @@ public final class OdeSimulator implements Simulator {
         world.setLinearDampingThreshold(0);
         world.setAngularDampingThreshold(0);
         world.setAutoDisableFlag(false);
-        handSpace = OdeHelper.createSimpleSpace();
         contactGroup = OdeHelper.createJointGroup();
         ground = OdeHelper.createPlane(null, 0, 1, 0, config.groundHeight());
         ground.setData(new GeomTag(Kind.GROUND, -1));
@@ -143,8 +163,19 @@ public final class OdeSimulator implements Simulator {
         torso.setKinematic();
         bodies = new DBody[n];
         centreOfMass = new Vec3[n];
+        List<DGeom> geoms = new ArrayList<>();
+        List<double[]> bounds = new ArrayList<>();
         for (Body b : model.bodies()) {
-            bodies[b.index()] = createBody(b);
+            bodies[b.index()] = createBody(b, geoms, bounds);
+        }
+        handGeoms = geoms.toArray(new DGeom[0]);
+        handGeomBody = new int[handGeoms.length];
+        handGeomCentre = new double[3 * handGeoms.length];
+        handGeomRadius = new double[handGeoms.length];
+        for (int i = 0; i < handGeoms.length; i++) {
+            handGeomBody[i] = ((GeomTag) handGeoms[i].getData()).body();
+            System.arraycopy(bounds.get(i), 0, handGeomCentre, 3 * i, 3);
+            handGeomRadius[i] = bounds.get(i)[3];
         }
         limitMotors = new DAMotorJoint[model.joints().size()];
         for (Joint j : model.joints()) {
@@ -153,6 +184,7 @@ public final class OdeSimulator implements Simulator {
         q = new double[model.dofCount()];
         qd = new double[model.dofCount()];
         tau = new double[model.dofCount()];
+        joints = model.joints().toArray(new Joint[0]);
         parentOf = new int[model.joints().size()];
         for (Joint j : model.joints()) {
             parentOf[j.index()] = j.isRoot() ? -1 : j.parent();
@@ -166,8 +198,11 @@ public final class OdeSimulator implements Simulator {
 
     // ---- construction ---------------------------------------------------------------------
 
-    /** Creates a body at its zero-configuration place: frame at the joint anchor, world-aligned. */
-    private DBody createBody(Body b) {
+    /**
+     * Creates a body at its zero-configuration place: frame at the joint anchor, world-aligned;
+     * its geoms and their bounding spheres are appended to {@code geoms} and {@code bounds}.
+     */
+    private DBody createBody(Body b, List<DGeom> geoms, List<double[]> bounds) {
         DBody body = OdeHelper.createBody(world);
         Vec3 com = b.mass().com();
         centreOfMass[b.index()] = com;
@@ -182,10 +217,12 @@ public final class OdeSimulator implements Simulator {
         body.setData(b.index());
         if (b.collides()) {
             for (Shape s : b.shapes()) {
-                DGeom geom = createGeom(handSpace, s);
+                DGeom geom = createGeom(null, s);
                 geom.setBody(body);
                 applyOffset(geom, s, com);
                 geom.setData(new GeomTag(Kind.HAND, b.index()));
+                geoms.add(geom);
+                bounds.add(boundingSphere(s, com));
             }
         }
         return body;
@@ -204,6 +241,25 @@ public final class OdeSimulator implements Simulator {
         }
         Shape.Sphere sp = (Shape.Sphere) s;
         return OdeHelper.createSphere(space, sp.radius());
+    }
+
+    /**
+     * A sphere holding the shape: centre (relative to the body's centre of mass {@code com}) and
+     * radius, grown by {@link #BOUND_MARGIN}.
+     */
+    private static double[] boundingSphere(Shape s, Vec3 com) {
+        double r;
+        if (s instanceof Shape.Capsule c) {
+            r = 0.5 * c.length() + c.radius();
+        } else if (s instanceof Shape.Cylinder c) {
+            r = Math.hypot(0.5 * c.length(), c.radius());
+        } else if (s instanceof Shape.Box b) {
+            r = 0.5 * b.size().norm();
+        } else {
+            r = ((Shape.Sphere) s).radius();
+        }
+        Vec3 c = s.centroid().minus(com);
+        return new double[] {c.x(), c.y(), c.z(), r + BOUND_MARGIN};
     }
 
     /** Places a body-attached geom relative to the ODE body, whose origin is the centre of mass. */
@@ -374,8 +430,10 @@ public final class OdeSimulator implements Simulator {
         touchesGround = false;
         touchesBox = false;
         applyJointTorques();
-        updateLimitMotors();
+        // the engine's own allocation: its AMotor setters (until the JIT removes it), the
+        // contact joints, and quickStep's per-step arrays
         long bytes0 = countEngineBytes ? THREADS.getCurrentThreadAllocatedBytes() : 0;
+        updateLimitMotors();
         collide();
         world.quickStep(config.timeStep());
         contactGroup.empty();
@@ -390,7 +448,7 @@ public final class OdeSimulator implements Simulator {
 
     /** eq. (3): each DOF's torque about its current world axis, equal and opposite on the two bodies. */
     private void applyJointTorques() {
-        for (Joint j : model.joints()) {
+        for (Joint j : joints) {
             double tx = 0, ty = 0, tz = 0;
             for (int s = 0; s < j.dofCount(); s++) {
                 int d = j.firstDof() + s;
@@ -408,14 +466,16 @@ public final class OdeSimulator implements Simulator {
 
     /** Feeds the ball joints' limit motors the current Euler axes (negated, see createJoint) and angles. */
     private void updateLimitMotors() {
-        for (Joint j : model.joints()) {
+        for (Joint j : joints) {
             DAMotorJoint m = limitMotors[j.index()];
             if (m == null) {
                 continue;
             }
             for (int s = 0; s < 3; s++) {
                 int d = j.firstDof() + s;
-                m.setAxis(s, 0, -worldAxes[3 * d], -worldAxes[3 * d + 1], -worldAxes[3 * d + 2]);
+                // ode4j copies the axis; its (x, y, z) overload would allocate a vector each call
+                motorAxis.set(-worldAxes[3 * d], -worldAxes[3 * d + 1], -worldAxes[3 * d + 2]);
+                m.setAxis(s, 0, motorAxis);
                 m.setAngle(s, q[d]);
             }
         }
@@ -438,7 +498,7 @@ public final class OdeSimulator implements Simulator {
             angularVels[3 * b + 1] = w.get1();
             angularVels[3 * b + 2] = w.get2();
         }
-        for (Joint j : model.joints()) {
+        for (Joint j : joints) {
             int p = parentOf[j.index()] < 0 ? n : parentOf[j.index()];
             int c = j.child();
             Rotations.conjMul(rotations, 4 * p, rotations, 4 * c, relative, 0);
@@ -468,6 +528,11 @@ public final class OdeSimulator implements Simulator {
         }
     }
 
+    /** Switches the bounding-sphere test of hand-object pairs on (the default) or off; for tests. */
+    void setBroadPhase(boolean on) {
+        broadPhase = on;
+    }
+
     @Override
     public void countEngineAllocation(boolean on) {
         countEngineBytes = on;
@@ -480,12 +545,40 @@ public final class OdeSimulator implements Simulator {
 
     // ---- collisions -------------------------------------------------------------------------
 
+    /**
+     * Contacts of the object with the hand/arm, the ground and the boxes. The hand's geoms are
+     * paired with the object here, in model order, and only when their bounding spheres overlap:
+     * a broad phase of about 40 sphere tests instead of an ODE space recomputing every hand
+     * geom's bounding box each step. The exact colliders then decide as before.
+     */
     private void collide() {
-        for (DGeom g : objectGeoms) {
-            OdeHelper.spaceCollide2(g, handSpace, null, nearCallback);
+        if (object == null) {
+            return;
+        }
+        DVector3C op = object.getPosition();
+        DQuaternionC or = object.getQuaternion();
+        objectRotation[0] = or.get0();
+        objectRotation[1] = or.get1();
+        objectRotation[2] = or.get2();
+        objectRotation[3] = or.get3();
+        for (int k = 0; k < objectGeoms.size(); k++) {
+            DGeom g = objectGeoms.get(k);
+            double[] ob = objectBounds.get(k);
+            Rotations.rotate(objectRotation, 0, ob, 0, centre, 0);
+            double ox = op.get0() + centre[0], oy = op.get1() + centre[1], oz = op.get2() + centre[2];
+            for (int i = 0; i < handGeoms.length; i++) {
+                int b = handGeomBody[i];
+                Rotations.rotate(rotations, 4 * b, handGeomCentre, 3 * i, centre, 3);
+                DVector3C bp = bodies[b].getPosition();
+                double dx = bp.get0() + centre[3] - ox, dy = bp.get1() + centre[4] - oy, dz = bp.get2() + centre[5] - oz;
+                double reach = handGeomRadius[i] + ob[3];
+                if (!broadPhase || dx * dx + dy * dy + dz * dz <= reach * reach) {
+                    collidePair(g, handGeoms[i]);
+                }
+            }
             collidePair(g, ground);
-            for (DGeom box : boxes) {
-                collidePair(g, box);
+            for (int i = 0; i < boxes.size(); i++) {
+                collidePair(g, boxes.get(i));
             }
         }
     }
@@ -568,6 +661,7 @@ public final class OdeSimulator implements Simulator {
             applyOffset(g, s, Vec3.ZERO);
             g.setData(new GeomTag(Kind.OBJECT, -1));
             objectGeoms.add(g);
+            objectBounds.add(boundingSphere(s, Vec3.ZERO));
         }
         objectSpec = spec;
         setObjectState(state);
@@ -595,6 +689,7 @@ public final class OdeSimulator implements Simulator {
             g.destroy();
         }
         objectGeoms.clear();
+        objectBounds.clear();
         if (object != null) {
             object.destroy();
             object = null;
@@ -672,7 +767,9 @@ public final class OdeSimulator implements Simulator {
         }
         contactGroup.destroy();
         ground.destroy();
-        handSpace.destroy();
+        for (DGeom g : handGeoms) {
+            g.destroy();
+        }
         world.destroy();
     }
 
