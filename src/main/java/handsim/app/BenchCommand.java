@@ -60,6 +60,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--object", defaultValue = "sphere", description = "thrown object of the loop scenario (default: ${DEFAULT-VALUE})")
     String object;
 
+    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
+            description = "desired apex height of every throw of the loop scenario (m, world; default: ${DEFAULT-VALUE})")
+    double throwHeight;
+
     @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode of worker 0 (default: ${DEFAULT-VALUE})")
     long seed;
 
@@ -70,8 +74,6 @@ final class BenchCommand implements Callable<Integer> {
     private static final long SAMPLE_PERIOD_MS = 5;
     /** Seeds of worker w start at seed + w * WORKER_SEED_STRIDE. */
     private static final long WORKER_SEED_STRIDE = 100_000;
-    /** Goal apex of every throw of the loop scenario (m), evaluate's default. */
-    private static final double THROW_HEIGHT = 1.2;
 
     /** What one worker measured. */
     private record Run(long steps, double wallS, double cpuS, long bytes, long engineBytes, int episodes, int loopsCaught,
@@ -91,6 +93,9 @@ final class BenchCommand implements Callable<Integer> {
         }
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
+        }
+        if (!(throwHeight > 0.7 && throwHeight < 3)) {
+            throw new IllegalArgumentException("--throw-height must be in (0.7, 3) m, got " + throwHeight);
         }
         if (iterations != null && (iterations < 1 || iterations > 1000)) {
             throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
@@ -176,7 +181,7 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
     private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(THROW_HEIGHT));
+        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, HeightGoals.fixed(throwHeight));
         long warmSteps = Math.round(warmup / sim.config().timeStep());
         long measuredSteps = Math.round(seconds / sim.config().timeStep());
         long s = firstSeed;

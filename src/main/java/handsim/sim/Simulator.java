@@ -59,8 +59,13 @@ public interface Simulator extends AutoCloseable {
 
     RigidState objectState();
 
-    /** The object's centre of mass (m, world) written to {@code out[0..2]}: {@link #objectState()} without allocating. */
-    void objectPosition(double[] out);
+    /**
+     * The object's centre of mass (m, world) written to {@code out[0..2]}: what the episode reads
+     * every physics step, so implementations should not allocate here (this default does).
+     */
+    default void objectPosition(double[] out) {
+        objectState().position().into(out, 0);
+    }
 
     /** Adds a fixed box (the target of the box task); it collides with the object only. */
     void addStaticBox(Vec3 center, Vec3 size);
