@@ -188,14 +188,11 @@ public final class Kinematics {
      * can produce; for others (constraint drift) it returns the nearest Euler angles.
      */
     public void decompose(Joint j, Quat relative, double[] q) {
-        decompose(j, relative.w(), relative.x(), relative.y(), relative.z(), q, new double[WORK]);
+        decompose(j, relative.w(), relative.x(), relative.y(), relative.z(), q);
     }
 
-    /**
-     * {@link #decompose(Joint, Quat, double[])} for the relative rotation (w, x, y, z), without
-     * allocating: {@code work} is caller-owned scratch of {@link #WORK} values.
-     */
-    public void decompose(Joint j, double w, double x, double y, double z, double[] q, double[] work) {
+    /** {@link #decompose(Joint, Quat, double[])} for the relative rotation (w, x, y, z), without allocating. */
+    public void decompose(Joint j, double w, double x, double y, double z, double[] q) {
         int first = j.firstDof();
         switch (j.type()) {
             case HINGE -> {
@@ -207,17 +204,17 @@ public final class Kinematics {
             case UNIVERSAL -> {
                 // R = R(a0, q0) R(a1, q1): in the basis (a0, a1, a0 x a1) this is Rx(q0) Ry(q1)
                 double[] b = bases[j.index()];
-                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1, work), inBasis(w, x, y, z, b, 1, 1, work));
-                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2, work), inBasis(w, x, y, z, b, 0, 0, work));
+                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1), inBasis(w, x, y, z, b, 1, 1));
+                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2), inBasis(w, x, y, z, b, 0, 0));
             }
             case BALL -> {
                 // R = R(a0, q0) R(a1, q1) R(a2, q2): in the basis (a0, a1, s a2) with s making it
                 // right-handed this is Rx(q0) Ry(q1) Rz(s q2)
                 double[] b = bases[j.index()];
                 double sign = ballSign[j.index()];
-                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2, work), inBasis(w, x, y, z, b, 2, 2, work));
-                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2, work))));
-                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1, work), inBasis(w, x, y, z, b, 0, 0, work));
+                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2), inBasis(w, x, y, z, b, 2, 2));
+                q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2))));
+                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1), inBasis(w, x, y, z, b, 0, 0));
             }
         }
     }
@@ -384,9 +381,8 @@ public final class Kinematics {
      * Entry (row, col) of the rotation (w, x, y, z) expressed in the orthonormal basis {@code b}
      * (b0, b1, b2 in a row): {@code b_row . R b_col}.
      */
-    private static double inBasis(double w, double x, double y, double z, double[] b, int row, int col, double[] work) {
-        Rotations.rotate(w, x, y, z, b, 3 * col, work, 0);
-        return Rotations.dot(b, 3 * row, work, 0);
+    private static double inBasis(double w, double x, double y, double z, double[] b, int row, int col) {
+        return Rotations.rotateDot(w, x, y, z, b, 3 * col, b, 3 * row);
     }
 
     /** Wraps an angle into (-pi, pi]. */

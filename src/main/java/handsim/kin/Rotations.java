@@ -53,6 +53,21 @@ public final class Rotations {
         out[o + 2] = vz + w * tz + (x * ty - y * tx);
     }
 
+    /**
+     * {@code u[j..j+2] . R v[k..k+2]} for the quaternion (w, x, y, z): {@link #rotate} then
+     * {@link #dot}, the same operations, without an output buffer.
+     */
+    public static double rotateDot(double w, double x, double y, double z, double[] v, int k, double[] u, int j) {
+        double vx = v[k], vy = v[k + 1], vz = v[k + 2];
+        double tx = 2 * (y * vz - z * vy);
+        double ty = 2 * (z * vx - x * vz);
+        double tz = 2 * (x * vy - y * vx);
+        double rx = vx + w * tx + (y * tz - z * ty);
+        double ry = vy + w * ty + (z * tx - x * tz);
+        double rz = vz + w * tz + (x * ty - y * tx);
+        return u[j] * rx + u[j + 1] * ry + u[j + 2] * rz;
+    }
+
     /** {@code out[o..o+2]} = the quaternion {@code q[i..i+3]} applied to {@code v[k..k+2]}. */
     public static void rotate(double[] q, int i, double[] v, int k, double[] out, int o) {
         rotate(q[i], q[i + 1], q[i + 2], q[i + 3], v, k, out, o);

@@ -502,7 +502,7 @@ public final class OdeSimulator implements Simulator {
             int p = parentOf[j.index()] < 0 ? n : parentOf[j.index()];
             int c = j.child();
             Rotations.conjMul(rotations, 4 * p, rotations, 4 * c, relative, 0);
-            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q, work);
+            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q);
             for (int i = 0; i < 3; i++) {
                 omegaWorld[i] = angularVels[3 * c + i] - angularVels[3 * p + i];
             }
