@@ -112,20 +112,23 @@ public final class Kinematics {
 
     /** World frame of a site. */
     public Frame siteFrame(Site site, double[] q) {
-        double[] t = new double[SITE_WORK];
-        siteFrame(site, q, t);
+        double[] t = new double[FRAME_WORK];
+        siteFrameInto(site, q, t);
         return new Frame(new Vec3(t[0], t[1], t[2]), new Quat(t[3], t[4], t[5], t[6]));
     }
 
-    /** Work values {@link #siteFrame(Site, double[], double[])} needs. */
-    private static final int SITE_WORK = 32;
+    /** Size of the work buffer of {@link #siteFrameInto} and {@link #siteJacobian(Site, double[], int[], double[], double[])}. */
+    public static final int SITE_WORK = 72;
+    /** The part of the work buffer {@link #siteFrameInto} uses. */
+    private static final int FRAME_WORK = 32;
 
     /**
      * The site's world frame into {@code t[0..6]} (origin, then rotation w, x, y, z), computed
-     * as {@link #bodyFrame} and {@link Frame#compose} do, operation for operation; {@code t}
-     * holds {@link #SITE_WORK} values.
+     * as {@link #bodyFrame} and {@link Frame#compose} do, operation for operation, without
+     * allocating; {@code t} is caller-owned work of {@link #SITE_WORK} values (32 suffice; its
+     * first 7 are the result).
      */
-    private void siteFrame(Site site, double[] q, double[] t) {
+    public void siteFrameInto(Site site, double[] q, double[] t) {
         // body frame at t[7..13], from the identity down the chain
         identityFrame(t, 7);
         for (int b : chains[site.body()]) {
@@ -323,13 +326,17 @@ public final class Kinematics {
      * zero columns). {@code jac} is row-major 6 x dofs.length.
      */
     public void siteJacobian(Site site, double[] q, int[] dofs, double[] jac) {
+        siteJacobian(site, q, dofs, jac, new double[SITE_WORK]);
+    }
+
+    /** {@link #siteJacobian(Site, double[], int[], double[])} without allocating: {@code t} is work of {@link #SITE_WORK} values. */
+    public void siteJacobian(Site site, double[] q, int[] dofs, double[] jac, double[] t) {
         java.util.Arrays.fill(jac, 0);
-        double[] t = new double[SITE_WORK + 40];
         // the site's origin p at t[0..2]
-        siteFrame(site, q, t);
+        siteFrameInto(site, q, t);
         int n = dofs.length;
         // the parent frame of each joint on the chain at F = t[32..38]; scratch from t[39]
-        final int f = SITE_WORK, anchor = f + 7, axesAt = f + 10, tmp = f + 19;
+        final int f = 32, anchor = f + 7, axesAt = f + 10, tmp = f + 19;
         identityFrame(t, f);
         for (int b : chains[site.body()]) {
             Joint j = model.joints().get(model.bodies().get(b).joint());
