@@ -15,8 +15,8 @@ class BenchCommandTest {
     @Test
     void twoWorkerLoopBenchWritesThroughputSpeedupAndAllocation(@TempDir Path dir) throws Exception {
         Path json = dir.resolve("bench.json");
-        // 0.2 s of loops per worker: too short for a catch (exit 1), long enough for every figure
-        int code = Main.run("bench", "--seconds", "0.2", "--warmup", "0.1", "--workers", "2", "--json", json.toString());
+        // 0.1 s of loops per worker: too short for a catch (exit 1), long enough for every figure
+        int code = Main.run("bench", "--seconds", "0.1", "--warmup", "0.02", "--workers", "2", "--json", json.toString());
         assertTrue(code == 0 || code == 1, "exit code " + code);
         JsonNode out = new ObjectMapper().readTree(json.toFile());
         assertEquals(2, out.get("workers").asInt());
@@ -24,8 +24,8 @@ class BenchCommandTest {
         JsonNode single = out.get("single_worker");
         JsonNode parallel = out.get("parallel");
         // each worker measures exactly its simulated time
-        assertEquals(1000, single.get("steps").asLong());
-        assertEquals(2000, parallel.get("steps").asLong());
+        assertEquals(500, single.get("steps").asLong());
+        assertEquals(1000, parallel.get("steps").asLong());
         assertEquals(parallel.get("steps_per_s").asDouble(), out.get("steps_per_s").asDouble(), 0.0);
         assertEquals(out.get("steps_per_s").asDouble() * h, out.get("realtime_factor").asDouble(), 1e-9);
         assertEquals(out.get("steps_per_s").asDouble() / single.get("steps_per_s").asDouble(), out.get("speedup").asDouble(), 1e-9);

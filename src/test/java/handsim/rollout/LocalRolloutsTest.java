@@ -26,10 +26,10 @@ class LocalRolloutsTest {
     private final HandModel model = TestSupport.model();
     private final SimConfig config = TestSupport.simConfig();
 
-    /** First catches of four seeded sphere episodes: about 1 s simulated each. */
+    /** First catches of three seeded sphere episodes (about 1 s simulated each): one worker of two runs two. */
     private List<EpisodeResult> evaluate(int workers, List<Integer> order) {
         try (Rollouts rollouts = new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config))) {
-            return rollouts.run(4, sim -> {
+            return rollouts.run(3, sim -> {
                 // per worker: the evaluation holds a goal sequence, so each worker has its own
                 CatchEvaluation evaluation = CatchEvaluation.nominal(
                         ControllerConfig.load(Home.resolve("configs/controller.json")),
@@ -48,9 +48,9 @@ class LocalRolloutsTest {
         List<EpisodeResult> two = evaluate(2, order2);
         // records compare every double exactly (apex, penetration, torque ratio, duration, ...)
         assertEquals(one, two);
-        assertEquals(List.of(0, 1, 2, 3), order1, "results reach the listener in index order");
-        assertEquals(List.of(0, 1, 2, 3), order2, "results reach the listener in index order");
-        for (int i = 0; i < 4; i++) {
+        assertEquals(List.of(0, 1, 2), order1, "results reach the listener in index order");
+        assertEquals(List.of(0, 1, 2), order2, "results reach the listener in index order");
+        for (int i = 0; i < 3; i++) {
             assertEquals(1000 + i, one.get(i).seed());
             assertTrue(one.get(i).firstCatch(), "the sphere of seed " + (1000 + i) + " is caught");
         }
