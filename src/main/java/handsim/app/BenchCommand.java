@@ -9,6 +9,7 @@ import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
+import handsim.sim.StepAccounting;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
@@ -70,13 +71,13 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--json", paramLabel = "FILE", description = "write the figures as JSON")
     Path json;
 
-    /** Stack samples per second for the time shares. */
-    private static final long SAMPLE_PERIOD_MS = 5;
+    /** Period of the execution samples for the time shares, ms. */
+    private static final long SAMPLE_PERIOD_MS = 1;
     /** Seeds of worker w start at seed + w * WORKER_SEED_STRIDE. */
     private static final long WORKER_SEED_STRIDE = 100_000;
 
     /** What one worker measured. */
-    private record Run(long steps, double wallS, double cpuS, long bytes, long engineBytes, int episodes, int loopsCaught,
+    private record Run(long steps, double wallS, double cpuS, long bytes, StepAccounting engine, int episodes, int loopsCaught,
             int firstCatches, boolean held, double ballToPalm) {
     }
 
@@ -121,12 +122,16 @@ final class BenchCommand implements Callable<Integer> {
         int samples;
         try (StackSampler sampler = new StackSampler(SAMPLE_PERIOD_MS)) {
             List<Run> runs = pass(model, config, thrown, 1, sampler);
+            sampler.stop();
             single = summarize(runs, config);
             shares = sampler.shares();
             samples = sampler.samples();
         }
         print("1 worker", single);
-        System.out.printf("  time shares (%d stack samples): %s%n", samples, formatShares(shares));
+        System.out.printf("  time shares (timed in step()): %s%n", formatShares(single.get("time_shares")));
+        // JFR's execution samples skip threads in native code (StrictMath), so only the IK's
+        // share, pure Java inside the controller, is read from them
+        System.out.printf("  of which DLS IK: %.1f %% (%d JFR execution samples)%n", 100 * shares.get("ik"), samples);
         ObjectNode total = single;
         if (workers > 1) {
             total = summarize(pass(model, config, thrown, workers, null), config);
@@ -141,9 +146,9 @@ final class BenchCommand implements Callable<Integer> {
         out.put("bytes_per_step", total.get("bytes_per_step").asDouble());
         out.put("speedup", speedup);
         out.set("single_worker", single);
-        ObjectNode shareNode = single.putObject("time_shares");
+        ObjectNode shareNode = single.putObject("sampled_shares");
         shares.forEach(shareNode::put);
-        single.put("time_share_samples", samples);
+        single.put("sampled_share_samples", samples);
         if (workers > 1) {
             out.set("parallel", total);
         }
@@ -167,14 +172,8 @@ final class BenchCommand implements Callable<Integer> {
                 if (sampler != null) {
                     sampler.register();
                 }
-                try {
-                    return scenario.equals("held-ball") ? heldBall(sim, model, thrown, measuredStart)
-                            : loops(sim, thrown, seed + worker * WORKER_SEED_STRIDE, measuredStart);
-                } finally {
-                    if (sampler != null) {
-                        sampler.unregister();
-                    }
-                }
+                return scenario.equals("held-ball") ? heldBall(sim, model, thrown, measuredStart)
+                        : loops(sim, thrown, seed + worker * WORKER_SEED_STRIDE, measuredStart);
             });
         }
     }
@@ -240,7 +239,7 @@ final class BenchCommand implements Callable<Integer> {
                 (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         final Simulator sim;
         final long steps0;
-        final long engineBytes0;
+        final StepAccounting engine0;
         final long t0;
         final long cpu0;
         final long bytes0;
@@ -249,8 +248,8 @@ final class BenchCommand implements Callable<Integer> {
         Meter(Simulator sim, long steps0) {
             this.sim = sim;
             this.steps0 = steps0;
-            sim.countEngineAllocation(true);
-            engineBytes0 = sim.engineAllocatedBytes();
+            sim.setAccounting(true);
+            engine0 = sim.accounting().copy();
             t0 = System.nanoTime();
             cpu0 = THREADS.getCurrentThreadCpuTime();
             bytes0 = THREADS.getCurrentThreadAllocatedBytes();
@@ -258,9 +257,9 @@ final class BenchCommand implements Callable<Integer> {
 
         Run finish(long steps, int episodes, int caught, int firstCatches, boolean held, double ballToPalm) {
             Run r = new Run(steps - steps0, (System.nanoTime() - t0) / 1e9, (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9,
-                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, sim.engineAllocatedBytes() - engineBytes0,
+                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, minus(sim.accounting(), engine0),
                     episodes, caught, firstCatches, held, ballToPalm);
-            sim.countEngineAllocation(false);
+            sim.setAccounting(false);
             return r;
         }
     }
@@ -281,7 +280,8 @@ final class BenchCommand implements Callable<Integer> {
      * wall time (all start together), steps per CPU second is less sensitive to other load.
      */
     private static ObjectNode summarize(List<Run> runs, SimConfig config) {
-        long steps = 0, bytes = 0, engineBytes = 0;
+        long steps = 0, bytes = 0, engineBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
+        double wallSum = 0;
         double wall = 0, cpu = 0;
         int episodes = 0, caught = 0, firstCatches = 0;
         boolean held = true;
@@ -289,7 +289,11 @@ final class BenchCommand implements Callable<Integer> {
         for (Run r : runs) {
             steps += r.steps();
             bytes += r.bytes();
-            engineBytes += r.engineBytes();
+            engineBytes += r.engine().engineBytes();
+            stepNs += r.engine().stepNanos();
+            collisionNs += r.engine().collisionNanos();
+            solverNs += r.engine().solverNanos();
+            wallSum += r.wallS();
             wall = Math.max(wall, r.wallS());
             cpu += r.cpuS();
             episodes += r.episodes();
@@ -307,6 +311,13 @@ final class BenchCommand implements Callable<Integer> {
         o.put("steps_per_cpu_s", steps / cpu);
         o.put("bytes_per_step", (double) bytes / steps);
         o.put("engine_bytes_per_step", (double) engineBytes / steps);
+        // where the wall time of the loop goes, timed inside the simulator's step()
+        ObjectNode shares = o.putObject("time_shares");
+        double wallNs = wallSum * 1e9;
+        shares.put("solver", solverNs / wallNs);
+        shares.put("collision", collisionNs / wallNs);
+        shares.put("engine_glue", (stepNs - solverNs - collisionNs) / wallNs);
+        shares.put("controller_pd_episode", Math.max(0, 1 - stepNs / wallNs));
         o.put("handsim_bytes_per_step", (double) (bytes - engineBytes) / steps);
         o.put("allocation_mb_per_s", bytes / wall / 1e6);
         o.put("episodes", episodes);
@@ -331,5 +342,19 @@ final class BenchCommand implements Callable<Integer> {
         StringBuilder b = new StringBuilder();
         shares.forEach((k, v) -> b.append(b.length() > 0 ? ", " : "").append(String.format("%s %.1f %%", k, 100 * v)));
         return b.toString();
+    }
+
+    private static String formatShares(com.fasterxml.jackson.databind.JsonNode shares) {
+        Map<String, Double> m = new java.util.LinkedHashMap<>();
+        shares.fields().forEachRemaining(e -> m.put(e.getKey(), e.getValue().asDouble()));
+        return formatShares(m);
+    }
+
+    /** The accounting accumulated since {@code from}. */
+    private static StepAccounting minus(StepAccounting now, StepAccounting from) {
+        StepAccounting d = new StepAccounting();
+        d.add(now.stepNanos() - from.stepNanos(), now.collisionNanos() - from.collisionNanos(),
+                now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes());
+        return d;
     }
 }

@@ -1,15 +1,30 @@
 package handsim.app;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import jdk.jfr.Recording;
+import jdk.jfr.consumer.RecordedEvent;
+import jdk.jfr.consumer.RecordedFrame;
+import jdk.jfr.consumer.RecordingFile;
 
 /**
- * Where the time of the step loop goes, by sampling: a daemon thread takes the stack of every
- * registered thread every {@code periodMillis} and puts the sample in the first category whose
- * marker is on the stack (anywhere, so the leaf's safepoint bias does not matter). The shares
- * are fractions of the samples; sampling at 200 Hz costs well under 1 % of the loop.
+ * Which code the step loop's samples are in, from the JVM's own execution sampler (JFR's
+ * {@code jdk.ExecutionSample}): it stops threads anywhere in Java code, not only at safepoints
+ * (sampling with {@code Thread.getStackTrace} moved samples out of the solver's long compiled
+ * loops). It does not see threads in native code, such as {@code StrictMath.atan2}, so the
+ * bench times the simulator's phases directly and uses this only to split the controller's
+ * share (the DLS IK). Each sample of a registered thread inside the measured window goes to the
+ * first category whose marker is on its stack. JFR keeps the 64 frames nearest the leaf: a sample whose leaf is in ode4j and
+ * whose visible frames name no handsim caller is deep inside quickStep, so it is the solver's.
  */
 final class StackSampler implements AutoCloseable {
 
@@ -25,58 +40,66 @@ final class StackSampler implements AutoCloseable {
         CATEGORIES.put("episode", List.of("handsim.task."));
     }
 
-    private final List<Thread> threads = new CopyOnWriteArrayList<>();
+    private final Recording recording = new Recording();
+    private final Set<Long> threads = ConcurrentHashMap.newKeySet();
+    private volatile Instant from;
+    private volatile Instant to;
     private final Map<String, Integer> counts = new LinkedHashMap<>();
-    private final Thread sampler;
-    private volatile boolean running = true;
-    private volatile boolean recording;
     private int samples;
 
     StackSampler(long periodMillis) {
+        recording.enable("jdk.ExecutionSample").withPeriod(Duration.ofMillis(periodMillis));
+        recording.start();
+    }
+
+    /** Samples the calling thread. */
+    void register() {
+        threads.add(Thread.currentThread().getId());
+    }
+
+    /** Opens the measured window (after warm-up). */
+    void start() {
+        from = Instant.now();
+    }
+
+    /** Closes the measured window and counts its samples. */
+    void stop() {
+        to = Instant.now();
+        recording.stop();
         for (String c : CATEGORIES.keySet()) {
             counts.put(c, 0);
         }
         counts.put("other", 0);
-        sampler = new Thread(() -> {
-            while (running) {
-                try {
-                    Thread.sleep(periodMillis);
-                } catch (InterruptedException e) {
-                    return;
-                }
-                if (recording) {
-                    for (Thread t : threads) {
-                        record(t.getStackTrace());
+        if (from == null) {
+            return;
+        }
+        try {
+            Path file = Files.createTempFile("handsim-bench", ".jfr");
+            try {
+                recording.dump(file);
+                for (RecordedEvent e : RecordingFile.readAllEvents(file)) {
+                    if (e.getEventType().getName().equals("jdk.ExecutionSample") && e.getStackTrace() != null
+                            && threads.contains(e.getThread("sampledThread").getJavaThreadId())
+                            && !e.getStartTime().isBefore(from) && !e.getStartTime().isAfter(to)) {
+                        record(e.getStackTrace().getFrames());
                     }
                 }
+            } finally {
+                Files.deleteIfExists(file);
             }
-        }, "stack-sampler");
-        sampler.setDaemon(true);
-        sampler.start();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot read the bench's execution samples", e);
+        }
     }
 
-    /** Samples the calling thread from now on. */
-    void register() {
-        threads.add(Thread.currentThread());
-    }
-
-    void unregister() {
-        threads.remove(Thread.currentThread());
-    }
-
-    /** Starts counting samples (after warm-up). */
-    void start() {
-        recording = true;
-    }
-
-    private synchronized void record(StackTraceElement[] stack) {
-        if (stack.length == 0) {
+    private void record(List<RecordedFrame> stack) {
+        if (stack.isEmpty()) {
             return;
         }
         samples++;
         for (var c : CATEGORIES.entrySet()) {
-            for (StackTraceElement e : stack) {
-                String frame = e.getClassName() + "." + e.getMethodName();
+            for (RecordedFrame f : stack) {
+                String frame = f.getMethod().getType().getName() + "." + f.getMethod().getName();
                 for (String marker : c.getValue()) {
                     if (frame.startsWith(marker)) {
                         counts.merge(c.getKey(), 1, Integer::sum);
@@ -85,15 +108,18 @@ final class StackSampler implements AutoCloseable {
                 }
             }
         }
-        counts.merge("other", 1, Integer::sum);
+        // a truncated stack deep in ode4j with no handsim frame left: the solver
+        boolean handsim = stack.stream().anyMatch(f -> f.getMethod().getType().getName().startsWith("handsim."));
+        String leaf = stack.get(0).getMethod().getType().getName();
+        counts.merge(!handsim && leaf.startsWith("org.ode4j.") ? "solver" : "other", 1, Integer::sum);
     }
 
-    synchronized int samples() {
+    int samples() {
         return samples;
     }
 
     /** Fraction of the samples in each category, in matching order, then "other". */
-    synchronized Map<String, Double> shares() {
+    Map<String, Double> shares() {
         Map<String, Double> out = new LinkedHashMap<>();
         for (var e : counts.entrySet()) {
             out.put(e.getKey(), samples == 0 ? 0 : e.getValue() / (double) samples);
@@ -103,7 +129,6 @@ final class StackSampler implements AutoCloseable {
 
     @Override
     public void close() {
-        running = false;
-        sampler.interrupt();
+        recording.close();
     }
 }

@@ -83,16 +83,16 @@ public interface Simulator extends AutoCloseable {
     java.util.List<WorldSnapshot.StaticBox> staticBoxes();
 
     /**
-     * Turns on or off counting the bytes the physics engine itself allocates inside {@link
-     * #step()} (its solver and contact joints), to tell them from the caller's allocation.
-     * Counting costs a few tens of nanoseconds per step.
+     * Turns on or off accounting of what {@link #step()} costs: its wall time split into
+     * collision and solver, and the bytes the engine itself allocates (see {@link
+     * StepAccounting}). It costs a few clock and counter reads per step.
      */
-    default void countEngineAllocation(boolean on) {
+    default void setAccounting(boolean on) {
     }
 
-    /** Bytes the engine allocated in {@link #step()} while counting was on; -1 if this simulator cannot count. */
-    default long engineAllocatedBytes() {
-        return -1;
+    /** The accounting so far (live; copy to keep), or null if this simulator does not account. */
+    default StepAccounting accounting() {
+        return null;
     }
 
     /** A drawable copy of the current state. */

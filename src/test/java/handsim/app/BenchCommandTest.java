@@ -32,13 +32,16 @@ class BenchCommandTest {
         assertTrue(out.get("bytes_per_step").asDouble() > 0);
         assertEquals(single.get("bytes_per_step").asDouble(),
                 single.get("engine_bytes_per_step").asDouble() + single.get("handsim_bytes_per_step").asDouble(), 1e-6);
+        // solver, collision, engine glue (timed inside step()) and the rest of the loop
         double shares = 0;
         for (var it = single.get("time_shares").elements(); it.hasNext(); ) {
-            shares += it.next().asDouble();
+            double share = it.next().asDouble();
+            assertTrue(share >= 0 && share <= 1, "share " + share);
+            shares += share;
         }
-        if (single.get("time_share_samples").asInt() > 0) {
-            assertEquals(1.0, shares, 1e-9, "time shares add up");
-        }
+        assertEquals(1.0, shares, 1e-9, "time shares add up");
+        assertTrue(single.get("time_shares").get("solver").asDouble() > 0.3, "the solver dominates the step");
+        assertTrue(single.has("sampled_shares"));
     }
 
     @Test

@@ -15,6 +15,7 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.SimConfig;
 import handsim.sim.SimulationDiverged;
+import handsim.sim.StepAccounting;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
 import java.util.ArrayList;
@@ -55,7 +56,7 @@ public final class OdeSimulator implements Simulator {
         OdeHelper.initODE2(0);
     }
 
-    /** Per-thread allocation counter, for {@link #countEngineAllocation}. */
+    /** Per-thread allocation counter, for {@link #setAccounting}. */
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
 
@@ -132,8 +133,9 @@ public final class OdeSimulator implements Simulator {
     private long steps;
     private boolean touchesGround;
     private boolean touchesBox;
-    private boolean countEngineBytes;
-    private long engineBytes;
+    /** Non-null while accounting is on. */
+    private StepAccounting accounting;
+    private final StepAccounting accounts = new StepAccounting();
 
     public OdeSimulator(HandModel model, SimConfig config) {
         this.model = model;
@@ -426,24 +428,33 @@ public final class OdeSimulator implements Simulator {
 
     @Override
     public void step() {
+        StepAccounting a = accounting;
+        long t0 = a != null ? System.nanoTime() : 0;
         contacts.clear(time);
         touchesGround = false;
         touchesBox = false;
         applyJointTorques();
         // the engine's own allocation: its AMotor setters (until the JIT removes it), the
         // contact joints, and quickStep's per-step arrays
-        long bytes0 = countEngineBytes ? THREADS.getCurrentThreadAllocatedBytes() : 0;
+        long bytes0 = a != null ? THREADS.getCurrentThreadAllocatedBytes() : 0;
         updateLimitMotors();
+        long t1 = a != null ? System.nanoTime() : 0;
         collide();
+        long t2 = a != null ? System.nanoTime() : 0;
         world.quickStep(config.timeStep());
         contactGroup.empty();
-        if (countEngineBytes) {
-            engineBytes += THREADS.getCurrentThreadAllocatedBytes() - bytes0;
+        long t3 = 0, bytes = 0;
+        if (a != null) {
+            t3 = System.nanoTime();
+            bytes = THREADS.getCurrentThreadAllocatedBytes() - bytes0;
         }
         time += config.timeStep();
         steps++;
         updateJointState();
         checkDiverged();
+        if (a != null) {
+            a.add(System.nanoTime() - t0, t2 - t1, t3 - t2, bytes);
+        }
     }
 
     /** eq. (3): each DOF's torque about its current world axis, equal and opposite on the two bodies. */
@@ -534,13 +545,13 @@ public final class OdeSimulator implements Simulator {
     }
 
     @Override
-    public void countEngineAllocation(boolean on) {
-        countEngineBytes = on;
+    public void setAccounting(boolean on) {
+        accounting = on ? accounts : null;
     }
 
     @Override
-    public long engineAllocatedBytes() {
-        return engineBytes;
+    public StepAccounting accounting() {
+        return accounts;
     }
 
     // ---- collisions -------------------------------------------------------------------------

@@ -66,15 +66,15 @@ class OdeSimulatorStepTest {
             for (int i = 0; i < 3000; i++) {
                 scenario.step();
             }
-            sim.countEngineAllocation(true);
+            sim.setAccounting(true);
             int steps = 2500;
-            long engine0 = sim.engineAllocatedBytes();
+            long engine0 = sim.accounting().engineBytes();
             long bytes0 = threads.getCurrentThreadAllocatedBytes();
             for (int i = 0; i < steps; i++) {
                 scenario.step();
             }
             long all = threads.getCurrentThreadAllocatedBytes() - bytes0;
-            long engine = sim.engineAllocatedBytes() - engine0;
+            long engine = sim.accounting().engineBytes() - engine0;
             assertTrue(sim.handContacts().any(), "the ball is held");
             // the bound for the step loop; ode4j's own arena and contact joints are counted apart
             assertTrue((all - engine) / (double) steps <= 64,
