@@ -72,7 +72,7 @@ final class BenchCommand implements Callable<Integer> {
     Path json;
 
     /** Period of the execution samples for the time shares, ms. */
-    private static final long SAMPLE_PERIOD_MS = 1;
+    private static final long SAMPLE_PERIOD_MS = 10;
     /** Seeds of worker w start at seed + w * WORKER_SEED_STRIDE. */
     private static final long WORKER_SEED_STRIDE = 100_000;
 
@@ -118,23 +118,28 @@ final class BenchCommand implements Callable<Integer> {
         out.put("workers", workers);
 
         ObjectNode single;
+        ObjectNode total;
         Map<String, Double> shares;
         int samples;
+        // the sampler runs through both passes, so that its small cost is the same in each; it
+        // counts the one-worker pass only
         try (StackSampler sampler = new StackSampler(SAMPLE_PERIOD_MS)) {
-            List<Run> runs = pass(model, config, thrown, 1, sampler);
+            single = summarize(pass(model, config, thrown, 1, sampler), config);
+            sampler.closeWindow();
+            print("1 worker", single);
+            total = single;
+            if (workers > 1) {
+                total = summarize(pass(model, config, thrown, workers, null), config);
+            }
             sampler.stop();
-            single = summarize(runs, config);
             shares = sampler.shares();
             samples = sampler.samples();
         }
-        print("1 worker", single);
         System.out.printf("  time shares (timed in step()): %s%n", formatShares(single.get("time_shares")));
         // JFR's execution samples skip threads in native code (StrictMath), so only the IK's
         // share, pure Java inside the controller, is read from them
         System.out.printf("  of which DLS IK: %.1f %% (%d JFR execution samples)%n", 100 * shares.get("ik"), samples);
-        ObjectNode total = single;
         if (workers > 1) {
-            total = summarize(pass(model, config, thrown, workers, null), config);
             print(workers + " workers", total);
         }
         double speedup = total.get("steps_per_s").asDouble() / single.get("steps_per_s").asDouble();

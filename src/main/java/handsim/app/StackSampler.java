@@ -62,9 +62,16 @@ final class StackSampler implements AutoCloseable {
         from = Instant.now();
     }
 
-    /** Closes the measured window and counts its samples. */
-    void stop() {
+    /** Closes the measured window. */
+    void closeWindow() {
         to = Instant.now();
+    }
+
+    /** Stops sampling and counts the samples of the window. */
+    void stop() {
+        if (to == null) {
+            closeWindow();
+        }
         recording.stop();
         for (String c : CATEGORIES.keySet()) {
             counts.put(c, 0);
