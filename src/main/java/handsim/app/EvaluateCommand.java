@@ -4,14 +4,14 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.model.HandModel;
+import handsim.rollout.LocalRollouts;
+import handsim.rollout.Rollouts;
 import handsim.sim.SimConfig;
-import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightGoals;
 import handsim.task.LoopRecord;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -42,6 +42,11 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "desired apex height of every throw (m, world)")
     double throwHeight;
 
+    @Option(names = "--workers", paramLabel = "N",
+            description = "episodes run in parallel, each worker with its own engine (default: all local cores); "
+                    + "results do not depend on it")
+    Integer workers;
+
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
     Path json;
 
@@ -62,27 +67,34 @@ final class EvaluateCommand implements Callable<Integer> {
         if (!(throwHeight > 0.7 && throwHeight < 3)) {
             throw new IllegalArgumentException("--throw-height must be in (0.7, 3) m, got " + throwHeight);
         }
+        if (workers == null) {
+            workers = LocalRollouts.localCores();
+        }
+        if (workers < 1 || workers > 256) {
+            throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
+        }
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
-        List<EpisodeResult> results = new ArrayList<>();
+        List<EpisodeResult> results;
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
         long t0 = System.nanoTime();
-        try (Simulator sim = Runtime.simulator(model, simConfig)) {
-            for (int e = 0; e < episodes; e++) {
-                long s = seed + e;
-                EpisodeResult r = evaluation.run(sim, s, loops, (episodeSeed, loop) -> {
+        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, workers)) {
+            // episode i has seed --seed + i on whichever worker runs it; printed in seed order
+            results = rollouts.run(episodes, sim -> {
+                CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
+                return i -> evaluation.run(sim, seed + i, loops, null);
+            }, (i, r) -> {
+                for (LoopRecord loop : r.loops()) {
                     System.out.printf("episode %d loop %3d: %-7s apex %s  penetration %.1f mm  limit excess %.2f deg  torque %.2f%n",
-                            episodeSeed, loop.index(), loop.caught() ? "caught" : "DROPPED",
+                            r.seed(), loop.index(), loop.caught() ? "caught" : "DROPPED",
                             Double.isNaN(loop.apexHeight()) ? "  -   " : String.format("%.3f m", loop.apexHeight()),
                             loop.maxPenetration() * 1e3, Math.toDegrees(loop.maxLimitExcess()), loop.peakTorqueRatio());
-                    rows.append(csvRow(episodeSeed, loop));
-                });
-                results.add(r);
-                System.out.printf("episode %d: first catch %s, %d loops completed, %d attempted (%s)%n", s,
+                    rows.append(csvRow(r.seed(), loop));
+                }
+                System.out.printf("episode %d: first catch %s, %d loops completed, %d attempted (%s)%n", r.seed(),
                         r.firstCatch() ? "yes" : "no", r.loopsCompleted(), r.loopsAttempted(), r.status());
-            }
+            });
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         ObjectNode summary = summarize(results, wall);
@@ -100,6 +112,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("episodes_requested", episodes);
             out.put("loops_per_episode", loops);
             out.put("throw_height_m", throwHeight);
+            out.put("workers", workers);
             out.setAll(summary);
             ArrayNode eps = out.putArray("episodes");
             for (EpisodeResult r : results) {

@@ -9,7 +9,10 @@ import handsim.model.ModelLoader;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
+import handsim.sim.ode.IsolatedEngine;
 import handsim.sim.ode.OdeSimulator;
+import handsim.rollout.LocalRollouts;
+import handsim.rollout.Rollouts;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.kin.Kinematics;
@@ -85,5 +88,10 @@ final class Runtime {
 
     static Simulator simulator(HandModel model, SimConfig config) {
         return new OdeSimulator(model, config);
+    }
+
+    /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
+    static Rollouts rollouts(HandModel model, SimConfig config, int workers) {
+        return new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config));
     }
 }

@@ -59,6 +59,14 @@ public interface Simulator extends AutoCloseable {
 
     RigidState objectState();
 
+    /**
+     * The object's centre of mass (m, world) written to {@code out[0..2]}: what the episode reads
+     * every physics step, so implementations should not allocate here (this default does).
+     */
+    default void objectPosition(double[] out) {
+        objectState().position().into(out, 0);
+    }
+
     /** Adds a fixed box (the target of the box task); it collides with the object only. */
     void addStaticBox(Vec3 center, Vec3 size);
 
@@ -73,6 +81,19 @@ public interface Simulator extends AutoCloseable {
 
     /** The static boxes added since the last reset. */
     java.util.List<WorldSnapshot.StaticBox> staticBoxes();
+
+    /**
+     * Turns on or off accounting of what {@link #step()} costs: its wall time split into
+     * collision and solver, and the bytes the engine itself allocates (see {@link
+     * StepAccounting}). It costs a few clock and counter reads per step.
+     */
+    default void setAccounting(boolean on) {
+    }
+
+    /** The accounting so far (live; copy to keep), or null if this simulator does not account. */
+    default StepAccounting accounting() {
+        return null;
+    }
 
     /** A drawable copy of the current state. */
     default WorldSnapshot snapshot() {

@@ -47,6 +47,8 @@ public final class CatchThrowEpisode {
     private final int periodSteps;
     private final double[] q;
     private final double[] qd;
+    /** The object's position, read every physics step without allocating. */
+    private final double[] objectPosition = new double[3];
     private final List<LoopRecord> loops = new ArrayList<>();
     private ControllerState state;
     private Status status = Status.RUNNING;
@@ -222,10 +224,10 @@ public final class CatchThrowEpisode {
             touchedSinceTick |= sim.handContacts().bodyMask();
             maxDepth = Math.max(maxDepth, sim.handContacts().maxDepth());
             boxHit |= sim.objectTouchesBox();
-            RigidState o = sim.objectState();
-            apex = Math.max(apex, o.position().y());
-            if (sim.objectTouchesGround() || o.position().distance(model.joints().get(0).anchor()) > limits.maxDistance()) {
-                landing = o.position();
+            sim.objectPosition(objectPosition);
+            apex = Math.max(apex, objectPosition[1]);
+            if (sim.objectTouchesGround() || distanceFromShoulder(objectPosition) > limits.maxDistance()) {
+                landing = Vec3.of(objectPosition);
                 status = Status.DROPPED;
                 return finishLoop(false);
             }
@@ -292,6 +294,13 @@ public final class CatchThrowEpisode {
             status = Status.DROPPED;
         }
         return finishLoop(held);
+    }
+
+    /** |p - shoulder anchor|, as Vec3.distance computes it. */
+    private double distanceFromShoulder(double[] p) {
+        Vec3 a = model.joints().get(0).anchor();
+        double dx = p[0] - a.x(), dy = p[1] - a.y(), dz = p[2] - a.z();
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
     }
 
     private void beginLoop() {

@@ -2,6 +2,7 @@ package handsim.sim.ode;
 
 import handsim.kin.Frame;
 import handsim.kin.Kinematics;
+import handsim.kin.Rotations;
 import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.model.Body;
@@ -14,6 +15,7 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.SimConfig;
 import handsim.sim.SimulationDiverged;
+import handsim.sim.StepAccounting;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
 import java.util.ArrayList;
@@ -54,6 +56,16 @@ public final class OdeSimulator implements Simulator {
         OdeHelper.initODE2(0);
     }
 
+    /** Per-thread allocation counter, for {@link #setAccounting}. */
+    private static final com.sun.management.ThreadMXBean THREADS =
+            (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+
+    /**
+     * Bounding spheres are grown by this much (m) so that rounding can never hide a touching
+     * pair: the margin only decides which pairs the exact colliders test.
+     */
+    private static final double BOUND_MARGIN = 1e-3;
+
     /** Speed beyond which the state is considered to have exploded, m/s. */
     private static final double DIVERGED_SPEED = 200;
 
@@ -67,7 +79,16 @@ public final class OdeSimulator implements Simulator {
     private final SimConfig config;
     private final Kinematics kin;
     private final DWorld world;
-    private final DSpace handSpace;
+    /** The hand/arm geoms in model order (body, then shape), in no space: {@link #collide} pairs them itself. */
+    private final DGeom[] handGeoms;
+    /** Per hand geom: its body, and its bounding sphere (centre relative to the body's centre of mass, body frame; radius). */
+    private final int[] handGeomBody;
+    private final double[] handGeomCentre;
+    private final double[] handGeomRadius;
+    /** Per object geom: bounding sphere centre (object frame) and radius. */
+    private final List<double[]> objectBounds = new ArrayList<>();
+    /** Scratch for the world centres of bounding spheres. */
+    private final double[] centre = new double[6];
     private final DJointGroup contactGroup;
     private final DPlane ground;
     private final DBody torso;
@@ -77,6 +98,22 @@ public final class OdeSimulator implements Simulator {
     private final double[] q;
     private final double[] qd;
     private final double[] tau;
+    /** The model's joints (an array: the per-step loops allocate no iterator). */
+    private final Joint[] joints;
+    /** Per joint: parent body index, or -1 for the fixed torso. */
+    private final int[] parentOf;
+    /** World rotation (w, x, y, z) of every body after the last step, then the torso's (identity) at index n. */
+    private final double[] rotations;
+    /** World angular velocity of every body after the last step, then the torso's (zero). */
+    private final double[] angularVels;
+    /** World axis of every DOF after the last step (3 per DOF): torques and limit motors act about these. */
+    private final double[] worldAxes;
+    /** Scratch: a joint's relative rotation, and the relative angular velocity in the parent frame. */
+    private final double[] relative = new double[4];
+    private final double[] omegaWorld = new double[3];
+    private final double[] omegaParent = new double[3];
+    private final double[] work = new double[Kinematics.WORK];
+    private final DVector3 motorAxis = new DVector3();
     private final ContactReport contacts = new ContactReport();
     private final DContactBuffer contactBuffer;
     private final double[] handErp;
@@ -84,7 +121,10 @@ public final class OdeSimulator implements Simulator {
     private final List<DGeom> objectGeoms = new ArrayList<>();
     private final List<DGeom> boxes = new ArrayList<>();
     private final List<WorldSnapshot.StaticBox> boxSpecs = new ArrayList<>();
-    private final DGeom.DNearCallback nearCallback = (data, o1, o2) -> collidePair(o1, o2);
+    /** Test bounding spheres before the exact colliders (off only in tests, to check it loses no contact). */
+    private boolean broadPhase = true;
+    /** The object's rotation (w, x, y, z) while colliding. */
+    private final double[] objectRotation = new double[4];
     private DBody object;
     private ObjectSpec objectSpec;
     private double staticErp;
@@ -93,6 +133,9 @@ public final class OdeSimulator implements Simulator {
     private long steps;
     private boolean touchesGround;
     private boolean touchesBox;
+    /** Non-null while accounting is on. */
+    private StepAccounting accounting;
+    private final StepAccounting accounts = new StepAccounting();
 
     public OdeSimulator(HandModel model, SimConfig config) {
         this.model = model;
@@ -110,7 +153,6 @@ public final class OdeSimulator implements Simulator {
         world.setLinearDampingThreshold(0);
         world.setAngularDampingThreshold(0);
         world.setAutoDisableFlag(false);
-        handSpace = OdeHelper.createSimpleSpace();
         contactGroup = OdeHelper.createJointGroup();
         ground = OdeHelper.createPlane(null, 0, 1, 0, config.groundHeight());
         ground.setData(new GeomTag(Kind.GROUND, -1));
@@ -123,8 +165,19 @@ public final class OdeSimulator implements Simulator {
         torso.setKinematic();
         bodies = new DBody[n];
         centreOfMass = new Vec3[n];
+        List<DGeom> geoms = new ArrayList<>();
+        List<double[]> bounds = new ArrayList<>();
         for (Body b : model.bodies()) {
-            bodies[b.index()] = createBody(b);
+            bodies[b.index()] = createBody(b, geoms, bounds);
+        }
+        handGeoms = geoms.toArray(new DGeom[0]);
+        handGeomBody = new int[handGeoms.length];
+        handGeomCentre = new double[3 * handGeoms.length];
+        handGeomRadius = new double[handGeoms.length];
+        for (int i = 0; i < handGeoms.length; i++) {
+            handGeomBody[i] = ((GeomTag) handGeoms[i].getData()).body();
+            System.arraycopy(bounds.get(i), 0, handGeomCentre, 3 * i, 3);
+            handGeomRadius[i] = bounds.get(i)[3];
         }
         limitMotors = new DAMotorJoint[model.joints().size()];
         for (Joint j : model.joints()) {
@@ -133,13 +186,25 @@ public final class OdeSimulator implements Simulator {
         q = new double[model.dofCount()];
         qd = new double[model.dofCount()];
         tau = new double[model.dofCount()];
+        joints = model.joints().toArray(new Joint[0]);
+        parentOf = new int[model.joints().size()];
+        for (Joint j : model.joints()) {
+            parentOf[j.index()] = j.isRoot() ? -1 : j.parent();
+        }
+        rotations = new double[4 * (n + 1)];
+        angularVels = new double[3 * (n + 1)];
+        rotations[4 * n] = 1;
+        worldAxes = new double[3 * model.dofCount()];
         reset(q, 0);
     }
 
     // ---- construction ---------------------------------------------------------------------
 
-    /** Creates a body at its zero-configuration place: frame at the joint anchor, world-aligned. */
-    private DBody createBody(Body b) {
+    /**
+     * Creates a body at its zero-configuration place: frame at the joint anchor, world-aligned;
+     * its geoms and their bounding spheres are appended to {@code geoms} and {@code bounds}.
+     */
+    private DBody createBody(Body b, List<DGeom> geoms, List<double[]> bounds) {
         DBody body = OdeHelper.createBody(world);
         Vec3 com = b.mass().com();
         centreOfMass[b.index()] = com;
@@ -154,10 +219,12 @@ public final class OdeSimulator implements Simulator {
         body.setData(b.index());
         if (b.collides()) {
             for (Shape s : b.shapes()) {
-                DGeom geom = createGeom(handSpace, s);
+                DGeom geom = createGeom(null, s);
                 geom.setBody(body);
                 applyOffset(geom, s, com);
                 geom.setData(new GeomTag(Kind.HAND, b.index()));
+                geoms.add(geom);
+                bounds.add(boundingSphere(s, com));
             }
         }
         return body;
@@ -176,6 +243,25 @@ public final class OdeSimulator implements Simulator {
         }
         Shape.Sphere sp = (Shape.Sphere) s;
         return OdeHelper.createSphere(space, sp.radius());
+    }
+
+    /**
+     * A sphere holding the shape: centre (relative to the body's centre of mass {@code com}) and
+     * radius, grown by {@link #BOUND_MARGIN}.
+     */
+    private static double[] boundingSphere(Shape s, Vec3 com) {
+        double r;
+        if (s instanceof Shape.Capsule c) {
+            r = 0.5 * c.length() + c.radius();
+        } else if (s instanceof Shape.Cylinder c) {
+            r = Math.hypot(0.5 * c.length(), c.radius());
+        } else if (s instanceof Shape.Box b) {
+            r = 0.5 * b.size().norm();
+        } else {
+            r = ((Shape.Sphere) s).radius();
+        }
+        Vec3 c = s.centroid().minus(com);
+        return new double[] {c.x(), c.y(), c.z(), r + BOUND_MARGIN};
     }
 
     /** Places a body-attached geom relative to the ODE body, whose origin is the centre of mass. */
@@ -342,64 +428,98 @@ public final class OdeSimulator implements Simulator {
 
     @Override
     public void step() {
+        StepAccounting a = accounting;
+        long t0 = a != null ? System.nanoTime() : 0;
         contacts.clear(time);
         touchesGround = false;
         touchesBox = false;
         applyJointTorques();
+        // the engine's own allocation: its AMotor setters (until the JIT removes it), the
+        // contact joints, and quickStep's per-step arrays
+        long bytes0 = a != null ? THREADS.getCurrentThreadAllocatedBytes() : 0;
         updateLimitMotors();
+        long t1 = a != null ? System.nanoTime() : 0;
         collide();
+        long t2 = a != null ? System.nanoTime() : 0;
         world.quickStep(config.timeStep());
         contactGroup.empty();
+        long t3 = 0, bytes = 0;
+        if (a != null) {
+            t3 = System.nanoTime();
+            bytes = THREADS.getCurrentThreadAllocatedBytes() - bytes0;
+        }
         time += config.timeStep();
         steps++;
         updateJointState();
         checkDiverged();
+        if (a != null) {
+            a.add(System.nanoTime() - t0, t2 - t1, t3 - t2, bytes);
+        }
     }
 
     /** eq. (3): each DOF's torque about its current world axis, equal and opposite on the two bodies. */
     private void applyJointTorques() {
-        for (Joint j : model.joints()) {
-            DBody parent = parentBody(j);
-            Vec3[] axes = kin.worldAxes(j, rotation(parent), q);
+        for (Joint j : joints) {
             double tx = 0, ty = 0, tz = 0;
-            for (int s = 0; s < axes.length; s++) {
-                double t = tau[j.firstDof() + s];
-                tx += t * axes[s].x();
-                ty += t * axes[s].y();
-                tz += t * axes[s].z();
+            for (int s = 0; s < j.dofCount(); s++) {
+                int d = j.firstDof() + s;
+                double t = tau[d];
+                tx += t * worldAxes[3 * d];
+                ty += t * worldAxes[3 * d + 1];
+                tz += t * worldAxes[3 * d + 2];
             }
             bodies[j.child()].addTorque(tx, ty, tz);
             if (!j.isRoot()) {
-                parent.addTorque(-tx, -ty, -tz);
+                bodies[j.parent()].addTorque(-tx, -ty, -tz);
             }
         }
     }
 
     /** Feeds the ball joints' limit motors the current Euler axes (negated, see createJoint) and angles. */
     private void updateLimitMotors() {
-        for (Joint j : model.joints()) {
+        for (Joint j : joints) {
             DAMotorJoint m = limitMotors[j.index()];
             if (m == null) {
                 continue;
             }
-            Vec3[] axes = kin.worldAxes(j, rotation(parentBody(j)), q);
             for (int s = 0; s < 3; s++) {
-                m.setAxis(s, 0, -axes[s].x(), -axes[s].y(), -axes[s].z());
-                m.setAngle(s, q[j.firstDof() + s]);
+                int d = j.firstDof() + s;
+                // ode4j copies the axis; its (x, y, z) overload would allocate a vector each call
+                motorAxis.set(-worldAxes[3 * d], -worldAxes[3 * d + 1], -worldAxes[3 * d + 2]);
+                m.setAxis(s, 0, motorAxis);
+                m.setAngle(s, q[d]);
             }
         }
     }
 
-    /** Joint angles and rates from the bodies' orientations and angular velocities. */
+    /**
+     * Joint angles and rates from the bodies' orientations and angular velocities, and the DOFs'
+     * world axes for the next step's torques and limit motors.
+     */
     private void updateJointState() {
-        for (Joint j : model.joints()) {
-            DBody parent = parentBody(j);
-            DBody child = bodies[j.child()];
-            Quat rp = rotation(parent);
-            Quat rc = rotation(child);
-            kin.decompose(j, rp.conjugate().mul(rc), q);
-            Vec3 omega = rp.inverseRotate(vec(child.getAngularVel()).minus(vec(parent.getAngularVel())));
-            kin.rates(j, q, omega, qd);
+        int n = bodies.length;
+        for (int b = 0; b < n; b++) {
+            DQuaternionC r = bodies[b].getQuaternion();
+            rotations[4 * b] = r.get0();
+            rotations[4 * b + 1] = r.get1();
+            rotations[4 * b + 2] = r.get2();
+            rotations[4 * b + 3] = r.get3();
+            DVector3C w = bodies[b].getAngularVel();
+            angularVels[3 * b] = w.get0();
+            angularVels[3 * b + 1] = w.get1();
+            angularVels[3 * b + 2] = w.get2();
+        }
+        for (Joint j : joints) {
+            int p = parentOf[j.index()] < 0 ? n : parentOf[j.index()];
+            int c = j.child();
+            Rotations.conjMul(rotations, 4 * p, rotations, 4 * c, relative, 0);
+            kin.decompose(j, relative[0], relative[1], relative[2], relative[3], q);
+            for (int i = 0; i < 3; i++) {
+                omegaWorld[i] = angularVels[3 * c + i] - angularVels[3 * p + i];
+            }
+            Rotations.inverseRotate(rotations, 4 * p, omegaWorld, 0, omegaParent, 0);
+            kin.rates(j, q, omegaParent[0], omegaParent[1], omegaParent[2], qd, work);
+            kin.worldAxes(j, rotations, 4 * p, q, worldAxes, 3 * j.firstDof());
         }
     }
 
@@ -419,14 +539,57 @@ public final class OdeSimulator implements Simulator {
         }
     }
 
+    /** Switches the bounding-sphere test of hand-object pairs on (the default) or off; for tests. */
+    void setBroadPhase(boolean on) {
+        broadPhase = on;
+    }
+
+    @Override
+    public void setAccounting(boolean on) {
+        accounting = on ? accounts : null;
+    }
+
+    @Override
+    public StepAccounting accounting() {
+        return accounts;
+    }
+
     // ---- collisions -------------------------------------------------------------------------
 
+    /**
+     * Contacts of the object with the hand/arm, the ground and the boxes. The hand's geoms are
+     * paired with the object here, in model order, and only when their bounding spheres overlap:
+     * a broad phase of about 40 sphere tests instead of an ODE space recomputing every hand
+     * geom's bounding box each step. The exact colliders then decide as before.
+     */
     private void collide() {
-        for (DGeom g : objectGeoms) {
-            OdeHelper.spaceCollide2(g, handSpace, null, nearCallback);
+        if (object == null) {
+            return;
+        }
+        DVector3C op = object.getPosition();
+        DQuaternionC or = object.getQuaternion();
+        objectRotation[0] = or.get0();
+        objectRotation[1] = or.get1();
+        objectRotation[2] = or.get2();
+        objectRotation[3] = or.get3();
+        for (int k = 0; k < objectGeoms.size(); k++) {
+            DGeom g = objectGeoms.get(k);
+            double[] ob = objectBounds.get(k);
+            Rotations.rotate(objectRotation, 0, ob, 0, centre, 0);
+            double ox = op.get0() + centre[0], oy = op.get1() + centre[1], oz = op.get2() + centre[2];
+            for (int i = 0; i < handGeoms.length; i++) {
+                int b = handGeomBody[i];
+                Rotations.rotate(rotations, 4 * b, handGeomCentre, 3 * i, centre, 3);
+                DVector3C bp = bodies[b].getPosition();
+                double dx = bp.get0() + centre[3] - ox, dy = bp.get1() + centre[4] - oy, dz = bp.get2() + centre[5] - oz;
+                double reach = handGeomRadius[i] + ob[3];
+                if (!broadPhase || dx * dx + dy * dy + dz * dz <= reach * reach) {
+                    collidePair(g, handGeoms[i]);
+                }
+            }
             collidePair(g, ground);
-            for (DGeom box : boxes) {
-                collidePair(g, box);
+            for (int i = 0; i < boxes.size(); i++) {
+                collidePair(g, boxes.get(i));
             }
         }
     }
@@ -509,6 +672,7 @@ public final class OdeSimulator implements Simulator {
             applyOffset(g, s, Vec3.ZERO);
             g.setData(new GeomTag(Kind.OBJECT, -1));
             objectGeoms.add(g);
+            objectBounds.add(boundingSphere(s, Vec3.ZERO));
         }
         objectSpec = spec;
         setObjectState(state);
@@ -536,6 +700,7 @@ public final class OdeSimulator implements Simulator {
             g.destroy();
         }
         objectGeoms.clear();
+        objectBounds.clear();
         if (object != null) {
             object.destroy();
             object = null;
@@ -559,6 +724,15 @@ public final class OdeSimulator implements Simulator {
         requireObject();
         return new RigidState(vec(object.getPosition()), rotation(object), vec(object.getLinearVel()),
                 vec(object.getAngularVel()));
+    }
+
+    @Override
+    public void objectPosition(double[] out) {
+        requireObject();
+        DVector3C p = object.getPosition();
+        out[0] = p.get0();
+        out[1] = p.get1();
+        out[2] = p.get2();
     }
 
     private void requireObject() {
@@ -604,7 +778,9 @@ public final class OdeSimulator implements Simulator {
         }
         contactGroup.destroy();
         ground.destroy();
-        handSpace.destroy();
+        for (DGeom g : handGeoms) {
+            g.destroy();
+        }
         world.destroy();
     }
 

@@ -1,0 +1,162 @@
+package handsim.rollout;
+
+import handsim.sim.Simulator;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Supplier;
+
+/**
+ * Rollouts on worker threads of this JVM. Each worker owns one simulator for its lifetime
+ * (made by the factory on first use and reused across runs); the rollouts of a run are handed
+ * out one index at a time to whichever worker is free. Since a rollout depends on its index
+ * alone, which worker runs it does not change its result. The simulators must not share
+ * mutable state: for ode4j use {@code IsolatedEngine}, which gives each its own copy of the
+ * engine's statics.
+ */
+public final class LocalRollouts implements Rollouts {
+
+    private final int workers;
+    private final Supplier<Simulator> simulators;
+    private final Simulator[] sims;
+    private final ExecutorService pool;
+
+    /** {@code workers} threads (at least 1), simulators from {@code simulators}. */
+    public LocalRollouts(int workers, Supplier<Simulator> simulators) {
+        if (workers < 1) {
+            throw new IllegalArgumentException("workers must be at least 1, got " + workers);
+        }
+        this.workers = workers;
+        this.simulators = simulators;
+        this.sims = new Simulator[workers];
+        AtomicInteger made = new AtomicInteger();
+        this.pool = Executors.newFixedThreadPool(workers, r -> {
+            Thread t = new Thread(r, "rollout-" + made.getAndIncrement());
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /** The number of processors this JVM may use: the default worker count. */
+    public static int localCores() {
+        return Runtime.getRuntime().availableProcessors();
+    }
+
+    @Override
+    public int workers() {
+        return workers;
+    }
+
+    /** A finished rollout on the queue to the caller: a result, or the failure that stops the run. */
+    private record Done(int index, Object result, Throwable failure) {
+    }
+
+    @Override
+    public <R> List<R> run(int count, RolloutTask<R> task, Listener<? super R> listener) {
+        if (count < 0) {
+            throw new IllegalArgumentException("count must be >= 0, got " + count);
+        }
+        AtomicInteger next = new AtomicInteger();
+        AtomicBoolean stop = new AtomicBoolean();
+        LinkedBlockingQueue<Done> done = new LinkedBlockingQueue<>();
+        List<Future<?>> running = new ArrayList<>();
+        for (int w = 0; w < Math.min(workers, count); w++) {
+            int worker = w;
+            running.add(pool.submit(() -> {
+                try {
+                    RolloutTask.Rollout<R> rollout = task.prepare(simulator(worker));
+                    for (int i = next.getAndIncrement(); i < count && !stop.get(); i = next.getAndIncrement()) {
+                        done.add(new Done(i, rollout.run(i), null));
+                    }
+                } catch (Throwable t) {
+                    done.add(new Done(-1, null, t));
+                }
+            }));
+        }
+        Object[] results = new Object[count];
+        boolean[] finished = new boolean[count];
+        int emitted = 0;
+        try {
+            for (int received = 0; received < count; received++) {
+                Done d = done.take();
+                if (d.failure() != null) {
+                    stop.set(true);
+                    throw rethrow(d.failure());
+                }
+                results[d.index()] = d.result();
+                finished[d.index()] = true;
+                while (emitted < count && finished[emitted]) {
+                    @SuppressWarnings("unchecked")
+                    R r = (R) results[emitted];
+                    listener.onResult(emitted, r);
+                    emitted++;
+                }
+            }
+        } catch (InterruptedException e) {
+            stop.set(true);
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while waiting for rollouts", e);
+        } finally {
+            stop.set(true);
+            awaitAll(running);
+        }
+        @SuppressWarnings("unchecked")
+        List<R> out = (List<R>) Arrays.asList(results);
+        return Collections.unmodifiableList(out);
+    }
+
+    /** Worker {@code w}'s simulator; only the thread running worker w's task touches it. */
+    private Simulator simulator(int w) {
+        Simulator s;
+        synchronized (sims) {
+            s = sims[w];
+        }
+        if (s == null) {
+            s = simulators.get();
+            synchronized (sims) {
+                sims[w] = s;
+            }
+        }
+        return s;
+    }
+
+    private static void awaitAll(List<Future<?>> running) {
+        for (Future<?> f : running) {
+            try {
+                f.get();
+            } catch (Exception e) {
+                // failures were reported through the queue; here we only wait for the workers to stop
+            }
+        }
+    }
+
+    private static RuntimeException rethrow(Throwable t) {
+        if (t instanceof RuntimeException r) {
+            return r;
+        }
+        if (t instanceof Error e) {
+            throw e;
+        }
+        return new IllegalStateException("rollout failed", t);
+    }
+
+    @Override
+    public void close() {
+        pool.shutdownNow();
+        synchronized (sims) {
+            for (int w = 0; w < sims.length; w++) {
+                if (sims[w] != null) {
+                    sims[w].close();
+                    sims[w] = null;
+                }
+            }
+        }
+    }
+}

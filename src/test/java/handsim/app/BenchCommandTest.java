@@ -1,0 +1,52 @@
+package handsim.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The bench command on a tiny budget: the JSON fields, consistent with each other. */
+class BenchCommandTest {
+
+    @Test
+    void twoWorkerLoopBenchWritesThroughputSpeedupAndAllocation(@TempDir Path dir) throws Exception {
+        Path json = dir.resolve("bench.json");
+        // 0.1 s of loops per worker: too short for a catch (exit 1), long enough for every figure
+        int code = Main.run("bench", "--seconds", "0.1", "--warmup", "0.02", "--workers", "2", "--json", json.toString());
+        assertTrue(code == 0 || code == 1, "exit code " + code);
+        JsonNode out = new ObjectMapper().readTree(json.toFile());
+        assertEquals(2, out.get("workers").asInt());
+        double h = out.get("time_step_s").asDouble();
+        JsonNode single = out.get("single_worker");
+        JsonNode parallel = out.get("parallel");
+        // each worker measures exactly its simulated time
+        assertEquals(500, single.get("steps").asLong());
+        assertEquals(1000, parallel.get("steps").asLong());
+        assertEquals(parallel.get("steps_per_s").asDouble(), out.get("steps_per_s").asDouble(), 0.0);
+        assertEquals(out.get("steps_per_s").asDouble() * h, out.get("realtime_factor").asDouble(), 1e-9);
+        assertEquals(out.get("steps_per_s").asDouble() / single.get("steps_per_s").asDouble(), out.get("speedup").asDouble(), 1e-9);
+        assertTrue(out.get("bytes_per_step").asDouble() > 0);
+        assertEquals(single.get("bytes_per_step").asDouble(),
+                single.get("engine_bytes_per_step").asDouble() + single.get("handsim_bytes_per_step").asDouble(), 1e-6);
+        // solver, collision, engine glue (timed inside step()) and the rest of the loop
+        double shares = 0;
+        for (var it = single.get("time_shares").elements(); it.hasNext(); ) {
+            double share = it.next().asDouble();
+            assertTrue(share >= 0 && share <= 1, "share " + share);
+            shares += share;
+        }
+        assertEquals(1.0, shares, 1e-9, "time shares add up");
+        assertTrue(single.get("time_shares").get("solver").asDouble() > 0.3, "the solver dominates the step");
+        assertTrue(single.has("sampled_shares"));
+    }
+
+    @Test
+    void badArgumentsExitWithStatus2() {
+        assertEquals(2, Main.run("bench", "--workers", "0"));
+        assertEquals(2, Main.run("bench", "--scenario", "juggle"));
+    }
+}
