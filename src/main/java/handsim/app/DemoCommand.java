@@ -1,5 +1,6 @@
 package handsim.app;
 
+import handsim.report.Outputs;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;

@@ -3,44 +3,88 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.control.ThrowPolicy;
+import handsim.math.Vec3;
 import handsim.model.HandModel;
+import handsim.report.Outputs;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
+import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
+import handsim.task.BoxTask;
+import handsim.task.BoxTests;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeResult;
+import handsim.task.HeightErrors;
 import handsim.task.HeightGoals;
 import handsim.task.LoopRecord;
+import handsim.task.Tasks;
+import handsim.task.ThrowTask;
+import handsim.train.ThrowPolicyFile;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.function.Function;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
-/** {@code handsim evaluate}: seeded catch-and-throw episodes with the per-loop figures. */
+/**
+ * {@code handsim evaluate}: seeded catch-and-throw episodes of a task with the nominal or a
+ * learned controller, with the per-loop figures and the paper's: the height errors and their
+ * histogram (Fig. 5), the box tests and their success map (Fig. 8).
+ */
 @Command(name = "evaluate", mixinStandardHelpOptions = true,
-        description = "Run seeded catch-and-throw episodes: an object is thrown toward the hand (configs/launch.json), "
-                + "then the arm catches and throws until a drop or --loops throws. Prints every loop; writes a summary.")
+        description = "Run seeded catch-and-throw episodes of a task: an object is thrown toward the hand (configs/launch.json), "
+                + "then the arm catches and throws. height: --episodes episodes of up to --loops throws, a new random target "
+                + "apex every throw (or --throw-height, or --goals); summary with the height errors and their histogram. "
+                + "box: --tests box positions, each a test that succeeds after 6 hit-and-catch loops in a row; summary "
+                + "with the success rate by distance from the region's centre and a success map.")
 final class EvaluateCommand implements Callable<Integer> {
 
-    @Option(names = "--controller", defaultValue = "nominal", description = "nominal (default)")
+    /** Hit-and-catch loops in a row that make a box test a success (paper sec. 4.3). */
+    static final int BOX_LOOPS_REQUIRED = 6;
+    /** Distance bands of the box report: quarters of the region's radius. */
+    static final int BOX_BANDS = 4;
+
+    @Option(names = "--task", defaultValue = "height", description = "height or box (default: ${DEFAULT-VALUE})")
+    String task;
+
+    @Option(names = "--controller", defaultValue = "nominal", description = "nominal or learned (default: ${DEFAULT-VALUE})")
     String controller;
+
+    @Option(names = "--policy", paramLabel = "FILE",
+            description = "the learned controller's policy (default: the shipped models/policies/<task>-<object>.json)")
+    Path policy;
 
     @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (configs/objects)")
     String object;
 
-    @Option(names = "--loops", defaultValue = "10", description = "throws to attempt per episode after the first catch")
+    @Option(names = "--loops", defaultValue = "10", description = "height: throws to attempt per episode after the first catch")
     int loops;
 
-    @Option(names = "--episodes", defaultValue = "1", description = "episodes, seeded --seed, --seed+1, ...")
+    @Option(names = "--episodes", defaultValue = "1", description = "height: episodes, seeded --seed, --seed+1, ...")
     int episodes;
 
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode")
+    @Option(names = "--tests", defaultValue = "538", description = "box: box positions to test (default: ${DEFAULT-VALUE}, the paper's)")
+    int tests;
+
+    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode or test")
     long seed;
 
-    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
-            description = "desired apex height of every throw (m, world)")
-    double throwHeight;
+    @Option(names = "--throw-height", paramLabel = "H",
+            description = "height: every throw aims at H m (default: a random target per throw from configs/tasks/height.json)")
+    Double throwHeight;
+
+    @Option(names = "--goals", paramLabel = "FILE",
+            description = "goals to use instead of seeded ones: {\"heights\": [h, ...]} (one per throw, in turn) or "
+                    + "{\"boxes\": [[x, y, z], ...]} (one per test, m, world)")
+    Path goals;
 
     @Option(names = "--workers", paramLabel = "N",
             description = "episodes run in parallel, each worker with its own engine (default: all local cores); "
@@ -50,13 +94,53 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
     Path json;
 
-    @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop as CSV")
+    @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop (height) or test (box) as CSV")
     Path csv;
+
+    @Option(names = "--plot", paramLabel = "FILE",
+            description = "the histogram (height) or success map (box) PNG (default: next to --json, same name with .png)")
+    Path plot;
 
     @Override
     public Integer call() throws Exception {
-        if (!controller.equals("nominal")) {
-            throw new IllegalArgumentException("--controller must be nominal (learned controllers come with training), got " + controller);
+        validate();
+        HandModel model = Runtime.model(null);
+        SimConfig simConfig = Runtime.simConfig();
+        Function<ThrowTask, ThrowPolicy> policies = throwPolicies();
+        long t0 = System.nanoTime();
+        ObjectNode out = JsonNodeFactory.instance.objectNode();
+        out.put("task", task);
+        out.put("controller", controller);
+        if (policy != null || controller.equals("learned")) {
+            out.put("policy", policyFile().toString());
+        }
+        out.put("object", object);
+        out.put("seed", seed);
+        out.put("workers", workers);
+        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, workers)) {
+            if (task.equals("box")) {
+                evaluateBox(rollouts, policies, out);
+            } else {
+                evaluateHeight(rollouts, policies, out);
+            }
+        }
+        out.put("wall_s", (System.nanoTime() - t0) / 1e9);
+        if (json != null) {
+            Outputs.writeJson(json, out);
+            System.out.println("wrote " + json);
+        }
+        return 0;
+    }
+
+    private void validate() {
+        if (!List.of("height", "box").contains(task)) {
+            throw new IllegalArgumentException("--task must be height or box, got " + task);
+        }
+        if (!List.of("nominal", "learned").contains(controller)) {
+            throw new IllegalArgumentException("--controller must be nominal or learned, got " + controller);
+        }
+        if (policy != null && !controller.equals("learned")) {
+            throw new IllegalArgumentException("--policy goes with --controller learned");
         }
         if (loops < 0 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
@@ -64,8 +148,17 @@ final class EvaluateCommand implements Callable<Integer> {
         if (episodes < 1 || episodes > 100000) {
             throw new IllegalArgumentException("--episodes must be in [1, 100000], got " + episodes);
         }
-        if (!(throwHeight > 0.7 && throwHeight < 3)) {
+        if (tests < 1 || tests > 100000) {
+            throw new IllegalArgumentException("--tests must be in [1, 100000], got " + tests);
+        }
+        if (throwHeight != null && !(throwHeight > 0.7 && throwHeight < 3)) {
             throw new IllegalArgumentException("--throw-height must be in (0.7, 3) m, got " + throwHeight);
+        }
+        if (throwHeight != null && (goals != null || task.equals("box"))) {
+            throw new IllegalArgumentException("--throw-height goes with the height task and without --goals");
+        }
+        if (goals != null && !Files.isRegularFile(goals)) {
+            throw new IllegalArgumentException("--goals: no file " + goals);
         }
         if (workers == null) {
             workers = LocalRollouts.localCores();
@@ -73,76 +166,118 @@ final class EvaluateCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
-        HandModel model = Runtime.model(null);
-        SimConfig simConfig = Runtime.simConfig();
-        List<EpisodeResult> results;
+        if (plot == null && json != null) {
+            String name = json.getFileName().toString();
+            plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
+        }
+    }
+
+    /** The policy file of the learned controller: --policy, or the shipped one for the task and object. */
+    private Path policyFile() {
+        return policy != null ? policy : Home.resolve("models/policies/" + task + "-" + object + ".json");
+    }
+
+    /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy. */
+    private Function<ThrowTask, ThrowPolicy> throwPolicies() {
+        if (controller.equals("nominal")) {
+            return t -> obs -> t.nominalThrow();
+        }
+        Path file = policyFile();
+        if (!Files.isRegularFile(file)) {
+            throw new IllegalArgumentException(policy != null ? "--policy: no file " + file
+                    : "no shipped policy for the " + task + " task with a " + object + " (" + Home.root().relativize(file)
+                            + "): train one (scripts/handsim train) and give it with --policy");
+        }
+        ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
+        loaded.forTask(Runtime.tasks().create(task), object); // a policy for another task or object fails here
+        return t -> loaded.forTask(t, object);
+    }
+
+    /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */
+    private CatchEvaluation evaluation(ThrowTask t, Function<ThrowTask, ThrowPolicy> policies, ControllerConfig cc,
+            ObjectSpec spec) {
+        return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t));
+    }
+
+    // ---- height ---------------------------------------------------------------------------
+
+    private void evaluateHeight(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
+        ControllerConfig cc = Runtime.controllerConfig();
+        ObjectSpec spec = Runtime.object(object);
+        double[] heightList = goals != null ? readGoals(goals, "heights", 1).stream().mapToDouble(g -> g[0]).toArray() : null;
+        Tasks tasks = Runtime.tasks();
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
-        long t0 = System.nanoTime();
-        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, workers)) {
-            // episode i has seed --seed + i on whichever worker runs it; printed in seed order
-            results = rollouts.run(episodes, sim -> {
-                CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
-                return i -> evaluation.run(sim, seed + i, loops, null);
-            }, (i, r) -> {
-                for (LoopRecord loop : r.loops()) {
-                    System.out.printf("episode %d loop %3d: %-7s apex %s  penetration %.1f mm  limit excess %.2f deg  torque %.2f%n",
-                            r.seed(), loop.index(), loop.caught() ? "caught" : "DROPPED",
-                            Double.isNaN(loop.apexHeight()) ? "  -   " : String.format("%.3f m", loop.apexHeight()),
-                            loop.maxPenetration() * 1e3, Math.toDegrees(loop.maxLimitExcess()), loop.peakTorqueRatio());
-                    rows.append(csvRow(r.seed(), loop));
-                }
-                System.out.printf("episode %d: first catch %s, %d loops completed, %d attempted (%s)%n", r.seed(),
-                        r.firstCatch() ? "yes" : "no", r.loopsCompleted(), r.loopsAttempted(), r.status());
-            });
-        }
-        double wall = (System.nanoTime() - t0) / 1e9;
-        ObjectNode summary = summarize(results, wall);
-        System.out.printf("%s, %d episodes: first catch %.0f %%, loops completed mean %.2f (min %d, max %d); "
-                + "max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f; %.0f s%n",
-                object, episodes, 100 * summary.get("first_catch_rate").asDouble(), summary.get("loops_completed_mean").asDouble(),
-                summary.get("loops_completed_min").asInt(), summary.get("loops_completed_max").asInt(),
-                summary.get("max_limit_excess_deg").asDouble(), summary.get("max_penetration_mm").asDouble(),
-                summary.get("peak_torque_ratio").asDouble(), wall);
-        if (json != null) {
-            ObjectNode out = JsonNodeFactory.instance.objectNode();
-            out.put("controller", controller);
-            out.put("object", object);
-            out.put("seed", seed);
-            out.put("episodes_requested", episodes);
-            out.put("loops_per_episode", loops);
-            out.put("throw_height_m", throwHeight);
-            out.put("workers", workers);
-            out.setAll(summary);
-            ArrayNode eps = out.putArray("episodes");
-            for (EpisodeResult r : results) {
-                ObjectNode o = eps.addObject();
-                o.put("seed", r.seed());
-                o.put("first_catch", r.firstCatch());
-                o.put("loops_attempted", r.loopsAttempted());
-                o.put("loops_completed", r.loopsCompleted());
-                o.put("drops", r.drops());
-                o.put("end", r.status().name().toLowerCase());
-                o.put("max_limit_excess_deg", Math.toDegrees(r.maxLimitExcess()));
-                o.put("max_penetration_mm", r.maxPenetration() * 1e3);
-                o.put("peak_torque_ratio", r.peakTorqueRatio());
+        // episode i has seed --seed + i on whichever worker runs it; printed in seed order
+        List<EpisodeResult> results = rollouts.run(episodes, sim -> {
+            HeightGoals g = heightList != null ? HeightGoals.sequence(heightList)
+                    : throwHeight != null ? HeightGoals.fixed(throwHeight) : null;
+            CatchEvaluation evaluation = evaluation(tasks.height(g), policies, cc, spec);
+            return i -> evaluation.run(sim, seed + i, loops, null);
+        }, (i, r) -> {
+            for (LoopRecord loop : r.loops()) {
+                System.out.printf(Locale.ROOT, "episode %d loop %3d: %-7s apex %s%s  penetration %.1f mm  limit excess %.2f deg"
+                        + "  torque %.2f%n", r.seed(), loop.index(), loop.caught() ? "caught" : "DROPPED",
+                        Double.isNaN(loop.apexHeight()) ? "  -   " : String.format(Locale.ROOT, "%.3f m", loop.apexHeight()),
+                        Double.isNaN(loop.targetHeight()) ? "" : String.format(Locale.ROOT, " (goal %.3f, %+.3f)",
+                                loop.targetHeight(), loop.apexHeight() - loop.targetHeight()),
+                        loop.maxPenetration() * 1e3, Math.toDegrees(loop.maxLimitExcess()), loop.peakTorqueRatio());
+                rows.append(csvRow(r.seed(), loop));
             }
-            Outputs.writeJson(json, out);
-            System.out.println("wrote " + json);
+            System.out.printf("episode %d: first catch %s, %d loops completed, %d attempted (%s)%n", r.seed(),
+                    r.firstCatch() ? "yes" : "no", r.loopsCompleted(), r.loopsAttempted(), r.status());
+        });
+        out.put("episodes_requested", episodes);
+        out.put("loops_per_episode", loops);
+        if (throwHeight != null) {
+            out.put("throw_height_m", throwHeight);
         }
+        out.setAll(summarize(results, 0));
+        out.remove("wall_s");
+        HeightErrors errors = HeightErrors.of(results.stream().flatMap(r -> r.loops().stream()).toList());
+        out.put("throws", errors.count());
+        out.put("height_error_mean", errors.mean());
+        out.put("height_error_abs_mean", errors.absMean());
+        out.put("height_error_p95", errors.absP95());
+        out.put("within_0_1_m", errors.within(0.1));
+        ArrayNode eps = out.putArray("episodes");
+        for (EpisodeResult r : results) {
+            ObjectNode o = eps.addObject();
+            o.put("seed", r.seed());
+            o.put("first_catch", r.firstCatch());
+            o.put("loops_attempted", r.loopsAttempted());
+            o.put("loops_completed", r.loopsCompleted());
+            o.put("drops", r.drops());
+            o.put("end", r.status().name().toLowerCase(Locale.ROOT));
+            o.put("max_limit_excess_deg", Math.toDegrees(r.maxLimitExcess()));
+            o.put("max_penetration_mm", r.maxPenetration() * 1e3);
+            o.put("peak_torque_ratio", r.peakTorqueRatio());
+        }
+        System.out.printf(Locale.ROOT, "%s, %s controller, %d episodes: first catch %.0f %%, loops completed %d (mean %.2f), "
+                + "drops %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
+                + "max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f%n", object, controller, episodes,
+                100 * out.get("first_catch_rate").asDouble(), out.get("loops_completed").asInt(),
+                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), errors.count(), errors.mean(),
+                errors.absMean(), errors.absP95(), 100 * errors.within(0.1), out.get("max_limit_excess_deg").asDouble(),
+                out.get("max_penetration_mm").asDouble(), out.get("peak_torque_ratio").asDouble());
         if (csv != null) {
             Outputs.writeString(csv, rows.toString());
             System.out.println("wrote " + csv);
         }
-        return 0;
+        if (plot != null && errors.count() > 0) {
+            errors.writeHistogram(plot, String.format(Locale.ROOT, "Height error, %s controller, %s (%d throws)", controller,
+                    object, errors.count()), 0.01);
+            System.out.println("wrote " + plot);
+        }
     }
 
     private static String csvRow(long seed, LoopRecord r) {
-        return String.format("%d,%d,%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
-                Double.isNaN(r.apexHeight()) ? "" : String.format("%.4f", r.apexHeight()), Double.isNaN(r.targetHeight()) ? "" : r.targetHeight(),
-                r.landing() == null ? "" : String.format("%.4f", r.landing().x()),
-                r.landing() == null ? "" : String.format("%.4f", r.landing().y()),
-                r.landing() == null ? "" : String.format("%.4f", r.landing().z()),
+        return String.format(Locale.ROOT, "%d,%d,%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
+                Double.isNaN(r.apexHeight()) ? "" : String.format(Locale.ROOT, "%.4f", r.apexHeight()),
+                Double.isNaN(r.targetHeight()) ? "" : String.format(Locale.ROOT, "%.4f", r.targetHeight()),
+                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().x()),
+                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().y()),
+                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().z()),
                 r.maxPenetration() * 1e3, Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
     }
 
@@ -165,5 +300,79 @@ final class EvaluateCommand implements Callable<Integer> {
         s.put("peak_torque_ratio", results.stream().mapToDouble(EpisodeResult::peakTorqueRatio).max().orElse(0));
         s.put("wall_s", wallSeconds);
         return s;
+    }
+
+    // ---- box ------------------------------------------------------------------------------
+
+    private void evaluateBox(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
+        ControllerConfig cc = Runtime.controllerConfig();
+        ObjectSpec spec = Runtime.object(object);
+        Tasks tasks = Runtime.tasks();
+        BoxTask reference = (BoxTask) tasks.create("box");
+        List<Vec3> boxes = new ArrayList<>();
+        if (goals != null) {
+            readGoals(goals, "boxes", 3).forEach(b -> boxes.add(new Vec3(b[0], b[1], b[2])));
+        } else {
+            for (int i = 0; i < tests; i++) {
+                boxes.add(reference.drawCenter(seed + i));
+            }
+        }
+        StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
+        List<BoxTests.Test> results = rollouts.run(boxes.size(), sim -> {
+            BoxTask t = (BoxTask) tasks.create("box");
+            CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+            return i -> BoxTests.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
+        }, (i, r) -> {
+            System.out.printf(Locale.ROOT, "test %3d: box (%.3f, %.3f, %.3f), %.3f m from the centre: %s (%d in a row)%n",
+                    r.index(), r.box().x(), r.box().y(), r.box().z(), r.distance(), r.success() ? "success" : "failure", r.inARow());
+            rows.append(String.format(Locale.ROOT, "%d,%d,%.4f,%.4f,%.4f,%.4f,%s,%d%n", r.index(), r.seed(), r.box().x(),
+                    r.box().y(), r.box().z(), r.distance(), r.success(), r.inARow()));
+        });
+        double radius = reference.regionRadius();
+        long successes = results.stream().filter(BoxTests.Test::success).count();
+        out.put("tests", results.size());
+        out.put("successes", successes);
+        out.put("success_rate", BoxTests.successRate(results));
+        out.put("loops_required", BOX_LOOPS_REQUIRED);
+        out.put("region_radius_m", radius);
+        List<BoxTests.Test> inner = BoxTests.band(results, 0, 0.5 * radius);
+        out.put("inner_half_tests", inner.size());
+        out.put("inner_half_success_rate", BoxTests.successRate(inner));
+        ArrayNode bands = out.putArray("by_distance");
+        for (int b = 0; b < BOX_BANDS; b++) {
+            double lo = radius * b / BOX_BANDS, hi = b == BOX_BANDS - 1 ? Double.POSITIVE_INFINITY : radius * (b + 1) / BOX_BANDS;
+            List<BoxTests.Test> in = BoxTests.band(results, lo, hi);
+            ObjectNode o = bands.addObject();
+            o.put("from_m", lo);
+            o.put("to_m", Math.min(hi, radius));
+            o.put("tests", in.size());
+            o.put("success_rate", BoxTests.successRate(in));
+        }
+        System.out.printf(Locale.ROOT, "box task, %s controller, %s: %d of %d tests succeeded (%.1f %%); inner half of the region "
+                + "(within %.3f m of its centre): %.1f %% of %d%n", controller, object, successes, results.size(),
+                100 * BoxTests.successRate(results), 0.5 * radius, 100 * BoxTests.successRate(inner), inner.size());
+        if (csv != null) {
+            Outputs.writeString(csv, rows.toString());
+            System.out.println("wrote " + csv);
+        }
+        if (plot != null) {
+            BoxTests.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
+                    "Box tests, %s controller (%d of %d succeeded)", controller, successes, results.size()));
+            System.out.println("wrote " + plot);
+        }
+    }
+
+    /** The goals listed under {@code key} in a goals file, each with {@code size} numbers. */
+    static List<double[]> readGoals(Path file, String key, int size) {
+        Json j = Json.load(file);
+        List<double[]> out = new ArrayList<>();
+        for (Json g : j.array(key)) {
+            out.add(size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size));
+        }
+        if (out.isEmpty()) {
+            throw j.fieldError(key, "at least one goal is needed");
+        }
+        j.requireNoUnknownFields();
+        return out;
     }
 }

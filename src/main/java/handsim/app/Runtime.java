@@ -17,9 +17,9 @@ import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.kin.Kinematics;
 import handsim.math.Vec3;
-import handsim.task.BoxTask;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
+import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.task.LaunchDistribution;
 import java.nio.file.Path;
@@ -73,17 +73,14 @@ final class Runtime {
         return new Kinematics(model).siteFrame(model.site("palm_center"), model.poseVector("neutral")).origin();
     }
 
-    /** The height task of {@code configs/tasks/height.json} aiming at {@code goals}. */
-    static HeightTask heightTask(HeightGoals goals) {
-        HandModel model = model(null);
-        return new HeightTask(HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json"))), goals,
-                controllerConfig().nominalThrows(), neutralPalm(model), simConfig().groundHeight());
+    /** The shipped tasks (configs/tasks). */
+    static Tasks tasks() {
+        return new Tasks(controllerConfig().nominalThrows(), neutralPalm(model(null)), simConfig().groundHeight());
     }
 
-    /** The box task of {@code configs/tasks/box.json}. */
-    static BoxTask boxTask() {
-        return new BoxTask(BoxTask.Config.parse(Json.load(Home.resolve("configs/tasks/box.json"))),
-                controllerConfig().nominalThrows(), neutralPalm(model(null)));
+    /** The height task of {@code configs/tasks/height.json} aiming at {@code goals}. */
+    static HeightTask heightTask(HeightGoals goals) {
+        return tasks().height(goals);
     }
 
     static Simulator simulator(HandModel model, SimConfig config) {

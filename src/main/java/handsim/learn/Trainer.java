@@ -23,6 +23,15 @@ import java.util.concurrent.ExecutorService;
  */
 public final class Trainer {
 
+    /**
+     * Plays a round's episode requests with a frozen policy snapshot and returns them in request
+     * order (on threads, worker processes, ...; {@link Rollouts#playAll} on an executor is one).
+     */
+    @FunctionalInterface
+    public interface EpisodePlayer {
+        List<Rollouts.Episode> play(Policy snapshot, List<Rollouts.Request> requests);
+    }
+
     private final TrainingConfig config;
     private final DdpgAgent agent;
     private final Rng episodeRng;
@@ -174,13 +183,19 @@ public final class Trainer {
      * losses are reported on each of its episodes.
      */
     public List<EpisodeStats> runRound(List<? extends Env> envs, ExecutorService executor, TrainingListener listener) {
+        return runRound((snapshot, requests) -> Rollouts.playAll(envs, executor, snapshot, requests, config.exploration()),
+                listener);
+    }
+
+    /** {@link #runRound(List, ExecutorService, TrainingListener)} with the episodes played by {@code player}. */
+    public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener) {
         int k = (int) Math.min(config.training().parallelEpisodes(), Math.max(1, config.training().episodes() - episodes));
         List<Rollouts.Request> requests = new ArrayList<>();
         for (int i = 0; i < k; i++) {
             requests.add(nextRequest());
         }
         Policy snapshot = agent.policy("training snapshot", "[-1, 1]^" + agent.actionSize());
-        List<Rollouts.Episode> played = Rollouts.playAll(envs, executor, snapshot, requests, config.exploration());
+        List<Rollouts.Episode> played = player.play(snapshot, requests);
         double[] q0 = new double[k];
         for (int i = 0; i < k; i++) {
             q0[i] = agent.value(played.get(i).firstObservation()); // the networks the episodes were played with

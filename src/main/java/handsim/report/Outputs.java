@@ -1,4 +1,4 @@
-package handsim.app;
+package handsim.report;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import handsim.config.Json;

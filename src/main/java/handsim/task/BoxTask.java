@@ -79,6 +79,16 @@ public final class BoxTask implements ThrowTask {
                 lo.y() + rng.nextDouble() * (hi.y() - lo.y()), lo.z() + rng.nextDouble() * (hi.z() - lo.z())));
     }
 
+    /** The centre of the box region (m, world). */
+    public Vec3 regionCenter() {
+        return neutralPalm.plus(config.regionCenter());
+    }
+
+    /** The largest distance a box centre can have from the region's centre: half the region's diagonal (m). */
+    public double regionRadius() {
+        return 0.5 * config.regionHigh().distance(config.regionLow());
+    }
+
     /** Distance (m) of a box centre from the centre of the region. */
     public double distanceFromRegionCenter(Vec3 center) {
         return center.distance(neutralPalm.plus(config.regionCenter()));

@@ -3,8 +3,9 @@ package handsim.task;
 import java.util.SplittableRandom;
 
 /**
- * The desired apex height of each throw: fixed, or drawn uniformly from [low, high] for every
- * throw from the episode's seed. The policy reads {@link #current()}; the episode moves on to
+ * The desired apex height of each throw: fixed, drawn uniformly from [low, high] for every
+ * throw from the episode's seed, or taken in turn from a given list (again from its start in
+ * every episode). The policy reads {@link #current()}; the episode moves on to
  * the next goal once a throw has been made. A person watching may {@link #shift} the goals up or
  * down while the episode runs.
  */
@@ -14,6 +15,8 @@ public final class HeightGoals {
     private double high;
     private SplittableRandom rng = new SplittableRandom(0);
     private double current;
+    private double[] sequence;
+    private int next;
 
     public HeightGoals(double low, double high) {
         if (!(low > 0 && high >= low)) {
@@ -24,6 +27,17 @@ public final class HeightGoals {
         this.current = low;
     }
 
+    /** The heights of {@code list} in turn, one per throw (cycling through it in a long episode). */
+    public static HeightGoals sequence(double[] list) {
+        if (list.length == 0) {
+            throw new IllegalArgumentException("a list of height goals needs at least one height");
+        }
+        double lo = java.util.Arrays.stream(list).min().orElseThrow(), hi = java.util.Arrays.stream(list).max().orElseThrow();
+        HeightGoals g = new HeightGoals(lo, hi);
+        g.sequence = list.clone();
+        return g;
+    }
+
     /** One height for every throw. */
     public static HeightGoals fixed(double height) {
         return new HeightGoals(height, height);
@@ -32,6 +46,7 @@ public final class HeightGoals {
     /** Starts the goal sequence of an episode and draws its first goal. */
     public void reset(long seed) {
         rng = new SplittableRandom(seed ^ 0x9E3779B97F4A7C15L);
+        next = 0;
         advance();
     }
 
@@ -48,10 +63,19 @@ public final class HeightGoals {
         low += dy;
         high += dy;
         current += dy;
+        if (sequence != null) {
+            for (int i = 0; i < sequence.length; i++) {
+                sequence[i] += dy;
+            }
+        }
     }
 
     void advance() {
-        current = high > low ? low + (high - low) * rng.nextDouble() : low;
+        if (sequence != null) {
+            current = sequence[next++ % sequence.length];
+        } else {
+            current = high > low ? low + (high - low) * rng.nextDouble() : low;
+        }
     }
 
     public double low() {

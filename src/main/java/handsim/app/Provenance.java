@@ -1,0 +1,44 @@
+package handsim.app;
+
+import handsim.config.Home;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.util.concurrent.TimeUnit;
+
+/** Where a result came from: the git commit of the working tree (and whether it had changes). */
+final class Provenance {
+
+    private Provenance() {
+    }
+
+    /** {@code <commit>} or {@code <commit>+changes}; {@code unknown} without git or outside a repository. */
+    static String gitCommit() {
+        String head = git("rev-parse", "HEAD");
+        if (head == null) {
+            return "unknown";
+        }
+        String status = git("status", "--porcelain", "--untracked-files=no");
+        return status == null || status.isEmpty() ? head : head + "+changes";
+    }
+
+    private static String git(String... args) {
+        String[] cmd = new String[args.length + 3];
+        cmd[0] = "git";
+        cmd[1] = "-C";
+        cmd[2] = Home.root().toString();
+        System.arraycopy(args, 0, cmd, 3, args.length);
+        try {
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+            String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+            if (!p.waitFor(10, TimeUnit.SECONDS) || p.exitValue() != 0) {
+                return null;
+            }
+            return out;
+        } catch (IOException e) {
+            return null;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return null;
+        }
+    }
+}

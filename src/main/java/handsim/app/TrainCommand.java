@@ -1,0 +1,110 @@
+package handsim.app;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.model.HandModel;
+import handsim.rollout.Rollouts;
+import handsim.sim.SimConfig;
+import handsim.task.Tasks;
+import handsim.train.ThrowEnv;
+import handsim.train.ThrowEnvs;
+import handsim.train.TrainConfig;
+import handsim.train.TrainRun;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim train}: a DDPG training run of a throw task in a run folder, or the
+ * continuation of one from its last checkpoint.
+ */
+@Command(name = "train", mixinStandardHelpOptions = true,
+        description = "Train the THROW of a task with DDPG (paper sec. 3.7, 4). Writes runs/<task>__<name>__<seed>__<time>/ "
+                + "with config.json, run.json, metrics.csv, checkpoint.zip, learning.png, losses.png and policy.json; "
+                + "a run killed at any moment continues with --resume.")
+final class TrainCommand implements Callable<Integer> {
+
+    @Option(names = "--config", paramLabel = "FILE", description = "training config, e.g. configs/train/height.json")
+    Path config;
+
+    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set training.episodes=200 "
+            + "(repeatable; dotted paths into the file)")
+    List<String> overrides = List.of();
+
+    @Option(names = "--resume", paramLabel = "RUN_DIR", description = "continue the run in this folder from its last checkpoint")
+    Path resume;
+
+    @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
+    Path runs;
+
+    @Override
+    public Integer call() throws IOException {
+        if ((config == null) == (resume == null)) {
+            throw new IllegalArgumentException("give either --config FILE (a new run) or --resume RUN_DIR");
+        }
+        if (resume != null && !overrides.isEmpty()) {
+            throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
+        }
+        TrainConfig c = resume != null ? TrainRun.savedConfig(resume) : load(config, overrides);
+        HandModel model = Runtime.model(null);
+        SimConfig simConfig = Runtime.simConfig();
+        ThrowEnvs envs = environments(c.run(), model);
+        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
+            TrainRun run = resume != null ? TrainRun.resume(resume, envs, rollouts)
+                    : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c));
+            run.run(System.out);
+        }
+        return 0;
+    }
+
+    /** The config file with the {@code --set} overrides applied, validated. */
+    static TrainConfig load(Path file, List<String> overrides) {
+        Map<String, String> kv = new LinkedHashMap<>();
+        for (String o : overrides) {
+            int eq = o.indexOf('=');
+            if (eq <= 0) {
+                throw new IllegalArgumentException("--set takes KEY=VALUE, got \"" + o + "\"");
+            }
+            kv.put(o.substring(0, eq), o.substring(eq + 1));
+        }
+        Json j = Json.load(file);
+        return TrainConfig.parse(Json.of(file.toString(), Json.withOverrides(file.toString(), j.node(), kv)));
+    }
+
+    /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
+    static ThrowEnvs environments(TrainConfig.Run run, HandModel model) {
+        Tasks tasks = Runtime.tasks();
+        tasks.create(run.task()); // an unknown task fails here, with the list of tasks
+        ControllerConfig cc = Runtime.controllerConfig();
+        return new ThrowEnvs(run.task(), Runtime.object(run.object()), () -> tasks.create(run.task()), cc,
+                Runtime.episodeLimits(), Runtime.launches(), cc.throwSpace(),
+                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward()));
+    }
+
+    private Path runFolder(TrainConfig c) {
+        String time = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
+        Path base = runs != null ? runs : Home.resolve("runs");
+        return base.resolve(c.run().task() + "__" + c.run().name() + "__" + c.learner().seed() + "__" + time);
+    }
+
+    /** What a run folder records about how the run was made. */
+    private ObjectNode provenance(TrainConfig c) {
+        ObjectNode p = Json.mapper().createObjectNode();
+        p.put("command", "scripts/handsim train --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides)));
+        p.put("seed", c.learner().seed());
+        p.put("commit", Provenance.gitCommit());
+        p.put("started", LocalDateTime.now().toString());
+        p.put("java", System.getProperty("java.version"));
+        p.put("cores", java.lang.Runtime.getRuntime().availableProcessors());
+        return p;
+    }
+}

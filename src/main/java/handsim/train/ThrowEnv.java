@@ -1,0 +1,141 @@
+package handsim.train;
+
+import handsim.control.Observation;
+import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
+import handsim.control.ThrowSpace;
+import handsim.learn.Env;
+import handsim.sim.SimulationDiverged;
+import handsim.sim.Simulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.LoopRecord;
+import handsim.task.StateVector;
+import handsim.task.ThrowTask;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * A throw task as the learner sees it (on a simulator it uses but does not own): an episode starts with an object thrown into the hand
+ * and caught; every step is one THROW, whose parameters are the action (mapped from [-1, 1]^7
+ * onto the {@link ThrowSpace}), and lasts until the next THROW is due. The reward is the task's
+ * (eq. 5-7) for the throw and its catch; a drop, a loop cut off by time or a diverged
+ * simulation is a real end (terminal). The loop cap of an episode is the trainer's truncation.
+ *
+ * <p>{@link #reset} is a function of its seed alone (the simulator is reset, the launch and the
+ * task's goals are drawn from the seed), so environments on several workers are
+ * interchangeable. If the launched object is not caught, the next launch derived from the seed
+ * is tried.
+ */
+public final class ThrowEnv implements Env {
+
+    /**
+     * @param firstCatchAttempts launches tried per reset before giving up
+     * @param divergedReward the reward of a throw whose simulation diverged (an episode end)
+     */
+    public record Settings(int firstCatchAttempts, double divergedReward) {
+    }
+
+    /** The throw policy of the episodes: it hands the controller the action of the current step. */
+    private static final class ChosenThrow implements ThrowPolicy {
+        private ThrowParameters next;
+
+        @Override
+        public ThrowParameters decide(Observation observation) {
+            if (next == null) {
+                throw new IllegalStateException("the controller asked for a throw no step chose");
+            }
+            ThrowParameters p = next;
+            next = null;
+            return p;
+        }
+    }
+
+    private final Simulator sim;
+    private final ThrowTask task;
+    private final ThrowSpace space;
+    private final Settings settings;
+    private final ChosenThrow chosen = new ChosenThrow();
+    private final CatchEvaluation evaluation;
+    private CatchThrowEpisode episode;
+    private double[] state;
+    private int diverged;
+
+    /**
+     * @param evaluation builds the episodes from the task and a throw policy (the environment's
+     *     own, which plays the chosen actions)
+     */
+    public ThrowEnv(Simulator sim, ThrowTask task, ThrowSpace space, Settings settings,
+            Function<ThrowPolicy, CatchEvaluation> evaluation) {
+        this.sim = sim;
+        this.task = task;
+        this.space = space;
+        this.settings = settings;
+        this.evaluation = evaluation.apply(chosen);
+    }
+
+    @Override
+    public int observationSize() {
+        return StateVector.BASE_SIZE + task.goalSize();
+    }
+
+    @Override
+    public int actionSize() {
+        return ThrowParameters.SIZE;
+    }
+
+    /** Throws whose simulation diverged so far (counted, logged by the caller, never hidden). */
+    public int divergedThrows() {
+        return diverged;
+    }
+
+    @Override
+    public double[] reset(long seed) {
+        for (int attempt = 0; attempt < settings.firstCatchAttempts(); attempt++) {
+            episode = evaluation.start(sim, seed * settings.firstCatchAttempts() + attempt);
+            try {
+                Observation first = episode.runUntilThrowDue();
+                if (first != null) {
+                    state = StateVector.encode(first, task.goal());
+                    return state.clone();
+                }
+            } catch (SimulationDiverged e) {
+                diverged++;
+                System.err.println("handsim: simulation diverged while catching the launch of seed " + seed + " (" + e.getMessage()
+                        + "); trying the next launch");
+            }
+        }
+        throw new IllegalStateException("no launch of seed " + seed + " was caught in " + settings.firstCatchAttempts()
+                + " attempts: the task cannot start");
+    }
+
+    @Override
+    public Step step(double[] action) {
+        if (episode == null || episode.status() != CatchThrowEpisode.Status.RUNNING) {
+            throw new IllegalStateException("step() needs a running episode: call reset() first");
+        }
+        chosen.next = space.fromAction(action);
+        Observation next;
+        try {
+            episode.resume();
+            next = episode.runUntilThrowDue();
+        } catch (SimulationDiverged e) {
+            diverged++;
+            System.err.println("handsim: simulation diverged during a throw (" + e.getMessage() + "); the episode ends there");
+            return new Step(state.clone(), settings.divergedReward(), true, false);
+        }
+        List<LoopRecord> loops = episode.loops();
+        LoopRecord thrown = loops.get(loops.size() - 1);
+        double reward = task.reward(thrown);
+        if (next == null) {
+            return new Step(StateVector.encode(episode.observe(), task.goal()), reward, true, false);
+        }
+        state = StateVector.encode(next, task.goal());
+        return new Step(state.clone(), reward, false, false);
+    }
+
+    /** The episode being played (for inspection). */
+    public CatchThrowEpisode episode() {
+        return episode;
+    }
+}

@@ -1,0 +1,32 @@
+package handsim.train;
+
+import handsim.control.ControllerConfig;
+import handsim.control.ThrowSpace;
+import handsim.sim.ObjectSpec;
+import handsim.sim.Simulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.EpisodeLimits;
+import handsim.task.LaunchDistribution;
+import handsim.task.ThrowTask;
+import java.util.function.Supplier;
+
+/**
+ * Everything needed to make {@link ThrowEnv}s of one task and object; the app wires it (the
+ * engine is its choice), training and evaluation make environments from it on their workers.
+ *
+ * @param tasks a fresh task per environment (tasks hold an episode's goals)
+ */
+public record ThrowEnvs(String task, ObjectSpec object, Supplier<ThrowTask> tasks, ControllerConfig controller,
+        EpisodeLimits limits, LaunchDistribution launches, ThrowSpace space, ThrowEnv.Settings settings) {
+
+    /** An environment on {@code sim} (which it owns from then on). */
+    public ThrowEnv create(Simulator sim) {
+        ThrowTask t = tasks.get();
+        return new ThrowEnv(sim, t, space, settings, policy -> new CatchEvaluation(controller, limits, launches, object, t, policy));
+    }
+
+    /** The length of the state the environments give. */
+    public int observationSize() {
+        return handsim.task.StateVector.BASE_SIZE + tasks.get().goalSize();
+    }
+}

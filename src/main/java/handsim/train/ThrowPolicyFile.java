@@ -1,0 +1,85 @@
+package handsim.train;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.report.Outputs;
+import handsim.config.Json;
+import handsim.control.ThrowParameters;
+import handsim.control.ThrowSpace;
+import handsim.learn.Policy;
+import handsim.task.StateVector;
+import handsim.task.ThrowTask;
+import java.io.IOException;
+import java.nio.file.Path;
+
+/**
+ * A trained throw policy on disk ({@code models/policies/*.json}): the plain-Java actor with its
+ * observation statistics, and what it was trained for, so that it is never used for something
+ * else: the task, the object, the length of its state, the box of throw parameters its [-1, 1]
+ * actions map onto, and where it came from (run, config, seed, commit).
+ *
+ * @param provenance free-form facts about the training run that made it
+ */
+public record ThrowPolicyFile(String task, String object, ThrowSpace space, Policy policy, ObjectNode provenance) {
+
+    public static final String FORMAT = "handsim-throw-policy";
+
+    public ThrowPolicyFile {
+        if (policy.actionSize() != ThrowParameters.SIZE) {
+            throw new IllegalArgumentException("a throw policy has " + ThrowParameters.SIZE + " outputs, this one " + policy.actionSize());
+        }
+    }
+
+    public static ThrowPolicyFile load(Path file) {
+        Json j = Json.load(file);
+        if (!FORMAT.equals(j.string("format"))) {
+            throw j.fieldError("format", "expected \"" + FORMAT + "\", got \"" + j.string("format") + "\"");
+        }
+        Json s = j.get("throwSpace");
+        ThrowSpace space;
+        try {
+            space = new ThrowSpace(s.numbers("low", ThrowParameters.SIZE), s.numbers("high", ThrowParameters.SIZE));
+        } catch (IllegalArgumentException e) {
+            throw s.error(e.getMessage());
+        }
+        s.requireNoUnknownFields();
+        ThrowPolicyFile f;
+        try {
+            f = new ThrowPolicyFile(j.string("task"), j.string("object"), space, Policy.parse(j.get("policy")),
+                    (ObjectNode) j.get("provenance").node());
+        } catch (IllegalArgumentException e) {
+            throw j.fieldError("policy", e.getMessage());
+        }
+        j.requireNoUnknownFields();
+        return f;
+    }
+
+    public void save(Path file) throws IOException {
+        ObjectNode root = Json.mapper().createObjectNode();
+        root.put("format", FORMAT);
+        root.put("task", task);
+        root.put("object", object);
+        ObjectNode s = root.putObject("throwSpace");
+        s.set("low", Json.array(space.low()));
+        s.set("high", Json.array(space.high()));
+        root.set("provenance", provenance);
+        root.set("policy", policy.toJson());
+        Outputs.writeJson(file, root);
+    }
+
+    /**
+     * The policy as the controller's throw policy for {@code task}; fails with a message naming
+     * the mismatch if it was trained for another task, object or state.
+     */
+    public LearnedThrowPolicy forTask(ThrowTask task, String object) {
+        if (!this.task.equals(task.name()) || !this.object.equals(object)) {
+            throw new IllegalArgumentException("this policy was trained for the " + this.task + " task with a " + this.object
+                    + ", not the " + task.name() + " task with a " + object);
+        }
+        int size = StateVector.BASE_SIZE + task.goalSize();
+        if (policy.observationSize() != size) {
+            throw new IllegalArgumentException("this policy reads " + policy.observationSize() + " state entries, the "
+                    + task.name() + " task gives " + size);
+        }
+        return new LearnedThrowPolicy(policy, space, task);
+    }
+}

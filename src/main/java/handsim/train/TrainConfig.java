@@ -1,0 +1,63 @@
+package handsim.train;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import handsim.learn.TrainingConfig;
+import java.nio.file.Path;
+
+/**
+ * A training run's configuration ({@code configs/train/*.json}): the {@code run} section says
+ * what is trained, every other section is the learner's ({@link TrainingConfig}, documented in
+ * {@code configs/train/README.md}).
+ *
+ * @param learner DDPG, exploration, training budget, pretraining and CMA-ES settings, and the root seed
+ */
+public record TrainConfig(Run run, TrainingConfig learner) {
+
+    /**
+     * What to train and how to run it.
+     *
+     * @param name the run's name (part of the run folder's name)
+     * @param task {@code height}, {@code box} or {@code flip} (configs/tasks)
+     * @param object the thrown object (configs/objects)
+     * @param workers episodes played at once (threads, each with its own simulator)
+     * @param firstCatchAttempts launches tried per episode before the object is caught
+     * @param divergedReward reward of a throw whose simulation diverged (an episode end)
+     * @param progressSeconds seconds between progress lines
+     */
+    public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
+            double progressSeconds) {
+
+        static Run parse(Json j) {
+            j.allow("comment");
+            Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
+                    j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
+                    j.positive("progressSeconds"));
+            if (!r.name.matches("[A-Za-z0-9._-]+")) {
+                throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
+            }
+            j.requireNoUnknownFields();
+            return r;
+        }
+    }
+
+    public static TrainConfig load(Path file) {
+        return parse(Json.load(file));
+    }
+
+    /** Parses a whole file: {@code run} plus the learner's sections. */
+    public static TrainConfig parse(Json j) {
+        Run run = Run.parse(j.get("run"));
+        ObjectNode rest = ((ObjectNode) j.node()).deepCopy();
+        rest.remove("run");
+        return new TrainConfig(run, TrainingConfig.parse(Json.of(j.source(), rest)));
+    }
+
+    /** This configuration in the file's format ({@code parse(toJson())} gives it back). */
+    public ObjectNode toJson() {
+        ObjectNode root = Json.mapper().createObjectNode();
+        root.set("run", Json.mapper().valueToTree(run));
+        root.setAll(learner.toJson());
+        return root;
+    }
+}

@@ -1,0 +1,211 @@
+package handsim.train;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import handsim.learn.EpisodeStats;
+import handsim.learn.LearningCurves;
+import handsim.learn.MetricsCsv;
+import handsim.learn.Policy;
+import handsim.learn.Rollouts;
+import handsim.learn.Trainer;
+import handsim.learn.TrainingListener;
+import handsim.report.Outputs;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * One training run in its folder ({@code runs/<task>__<name>__<seed>__<time>/}): the merged
+ * {@code config.json} and {@code run.json} (seed, commit, command), {@code metrics.csv} (one
+ * row per episode, flushed as it comes), {@code checkpoint.zip} (the whole learner, written
+ * atomically every {@code checkpointEveryEpisodes} episodes and at the end), the learning
+ * curves {@code learning.png} and {@code losses.png} (paper Fig. 6, 9) and {@code policy.json},
+ * the actor as a shipped throw policy, refreshed with every checkpoint. A run killed at any
+ * moment resumes from its last checkpoint; the episodes after it are played again, the same.
+ *
+ * <p>Episodes are played in rounds of {@code parallelEpisodes} on the rollout workers (each
+ * with its own simulator), with the policy as it was when the round began; then the learner
+ * does the round's updates.
+ */
+public final class TrainRun {
+
+    public static final String CONFIG = "config.json";
+    public static final String CHECKPOINT = "checkpoint.zip";
+    public static final String METRICS = "metrics.csv";
+    public static final String POLICY = "policy.json";
+
+    private final Path dir;
+    private final TrainConfig config;
+    private final ThrowEnvs envs;
+    private final handsim.rollout.Rollouts rollouts;
+    private final Trainer trainer;
+
+    private TrainRun(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, Trainer trainer) {
+        this.dir = dir;
+        this.config = config;
+        this.envs = envs;
+        this.rollouts = rollouts;
+        this.trainer = trainer;
+    }
+
+    /**
+     * A new run in {@code dir} (created; it must not hold a run already), with {@code provenance}
+     * (seed, commit, command line) written to {@code run.json}.
+     */
+    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
+            ObjectNode provenance) throws IOException {
+        if (Files.exists(dir.resolve(CONFIG))) {
+            throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
+        }
+        Files.createDirectories(dir);
+        Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
+        Outputs.writeJson(dir.resolve("run.json"), provenance);
+        Trainer trainer = Trainer.create(config.learner(), envs.observationSize(), handsim.control.ThrowParameters.SIZE);
+        return new TrainRun(dir, config, envs, rollouts, trainer);
+    }
+
+    /** The configuration saved in a run folder. */
+    public static TrainConfig savedConfig(Path dir) {
+        Path file = dir.resolve(CONFIG);
+        if (!Files.isRegularFile(file)) {
+            throw new IllegalArgumentException(dir + " is not a run folder (no " + CONFIG + ")");
+        }
+        return TrainConfig.load(file);
+    }
+
+    /**
+     * Continues the run in {@code dir} from its last checkpoint, or from the start when it was
+     * stopped before its first one.
+     */
+    public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts) throws IOException {
+        TrainConfig config = savedConfig(dir);
+        Path checkpoint = dir.resolve(CHECKPOINT);
+        Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
+                : Trainer.create(config.learner(), envs.observationSize(), handsim.control.ThrowParameters.SIZE);
+        return new TrainRun(dir, config, envs, rollouts, trainer);
+    }
+
+    public Path dir() {
+        return dir;
+    }
+
+    public Trainer trainer() {
+        return trainer;
+    }
+
+    /** Trains until the configured number of episodes, printing progress to {@code out}. */
+    public void run(PrintStream out) throws IOException {
+        int budget = config.learner().training().episodes();
+        int every = config.learner().training().checkpointEveryEpisodes();
+        Progress progress = new Progress(out, budget, trainer.episodes(), config.run().progressSeconds());
+        out.printf(Locale.ROOT, "training %s (%s task, %s) in %s: episodes %d..%d, %d at a time on %d workers%n",
+                config.run().name(), config.run().task(), config.run().object(), dir, trainer.episodes() + 1, budget,
+                config.learner().training().parallelEpisodes(), rollouts.workers());
+        try (MetricsCsv csv = MetricsCsv.open(dir.resolve(METRICS), trainer.episodes())) {
+            TrainingListener listener = new TrainingListener() {
+                @Override
+                public void onEpisode(EpisodeStats s) {
+                    csv.onEpisode(s);
+                    progress.onEpisode(s);
+                }
+            };
+            while (trainer.episodes() < budget) {
+                long before = trainer.episodes();
+                trainer.runRound(this::play, listener);
+                if (every > 0 && trainer.episodes() / every != before / every) {
+                    saveCheckpoint();
+                }
+            }
+        }
+        saveCheckpoint();
+        progress.finish();
+        out.println("wrote " + dir.resolve(POLICY) + ", " + CHECKPOINT + ", " + METRICS + ", learning.png, losses.png");
+    }
+
+    /** A round's episodes on the rollout workers, each playing on an environment over its own simulator. */
+    private List<Rollouts.Episode> play(Policy snapshot, List<Rollouts.Request> requests) {
+        return rollouts.run(requests.size(), sim -> {
+            ThrowEnv env = envs.create(sim);
+            return i -> Rollouts.play(env, requests.get(i), snapshot::act, config.learner().exploration(), t -> { });
+        });
+    }
+
+    /** The learner, its policy as a throw policy file, and the curves so far. */
+    private void saveCheckpoint() throws IOException {
+        trainer.checkpoint(dir.resolve(CHECKPOINT));
+        ObjectNode provenance = Json.mapper().createObjectNode();
+        provenance.put("run", dir.getFileName().toString());
+        provenance.put("episodes", trainer.episodes());
+        provenance.put("decisions", trainer.steps());
+        provenance.put("seed", config.learner().seed());
+        provenance.set("config", config.toJson());
+        Policy actor = trainer.agent().policy(config.run().task() + " task, " + config.run().object() + ", run "
+                + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
+        new ThrowPolicyFile(config.run().task(), config.run().object(), envs.space(), actor, provenance)
+                .save(dir.resolve(POLICY));
+        List<EpisodeStats> stats = MetricsCsv.read(dir.resolve(METRICS));
+        String title = config.run().task() + " task, " + config.run().object() + " (" + config.run().name() + ", seed "
+                + config.learner().seed() + ")";
+        LearningCurves.plotRewards(dir.resolve("learning.png"), stats, "Learning curve: " + title);
+        LearningCurves.plotLosses(dir.resolve("losses.png"), stats, "Losses: " + title);
+    }
+
+    /** A progress line at most every few seconds: episodes, rewards, Q0, drops, speed and ETA. */
+    private static final class Progress {
+        private final PrintStream out;
+        private final int budget;
+        private final long startEpisode;
+        private final double everySeconds;
+        private final long t0 = System.nanoTime();
+        private long lastPrint;
+        private EpisodeStats last;
+        private int windowEpisodes;
+        private int windowTerminal;
+
+        Progress(PrintStream out, int budget, long startEpisode, double everySeconds) {
+            this.out = out;
+            this.budget = budget;
+            this.startEpisode = startEpisode;
+            this.everySeconds = everySeconds;
+            this.lastPrint = t0;
+        }
+
+        void onEpisode(EpisodeStats s) {
+            last = s;
+            windowEpisodes++;
+            windowTerminal += s.terminal() ? 1 : 0;
+            if ((System.nanoTime() - lastPrint) * 1e-9 >= everySeconds) {
+                print();
+            }
+        }
+
+        void finish() {
+            if (last != null && windowEpisodes > 0) {
+                print();
+            }
+        }
+
+        private void print() {
+            long now = System.nanoTime();
+            double elapsed = (now - t0) * 1e-9;
+            double rate = (last.episode() - startEpisode) / Math.max(elapsed, 1e-9);
+            double eta = (budget - last.episode()) / Math.max(rate, 1e-9);
+            int width = 24, filled = (int) Math.round(width * (double) last.episode() / budget);
+            out.printf(Locale.ROOT, "[%s%s] %d/%d episodes  %d decisions  reward %.2f  average %.2f  Q0 %.2f  drops %.0f%%"
+                    + "  %.1f episodes/min  ETA %s%n", "#".repeat(filled), ".".repeat(width - filled), last.episode(), budget,
+                    last.totalSteps(), last.reward(), last.averageReward(), last.q0(), 100.0 * windowTerminal / windowEpisodes,
+                    60 * rate, clock(eta));
+            lastPrint = now;
+            windowEpisodes = 0;
+            windowTerminal = 0;
+        }
+
+        private static String clock(double seconds) {
+            long s = Math.round(seconds);
+            return String.format(Locale.ROOT, "%d:%02d:%02d", s / 3600, (s / 60) % 60, s % 60);
+        }
+    }
+}

@@ -1,0 +1,7 @@
+/**
+ * Learning the throws: the physics tasks as {@link handsim.learn.Env environments} (one decision
+ * per THROW, sec. 3.7), the learned throw policy the controller uses, training runs with their
+ * run folders, and the shipped policies. It joins {@code handsim.task} (episodes, tasks) and
+ * {@code handsim.learn} (DDPG, CMA-ES), which do not know each other.
+ */
+package handsim.train;
