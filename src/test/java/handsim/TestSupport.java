@@ -50,11 +50,15 @@ public final class TestSupport {
         return new handsim.kin.Kinematics(model()).siteFrame(model().site("palm_center"), model().poseVector("neutral")).origin();
     }
 
-    /** The shipped height task (configs/tasks/height.json) aiming at {@code goals}. */
-    public static handsim.task.HeightTask heightTask(handsim.task.HeightGoals goals) {
-        return new handsim.task.HeightTask(handsim.task.HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json"))),
-                goals, handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json")).nominalThrows(),
+    /** The shipped tasks (configs/tasks). */
+    public static handsim.task.Tasks tasks() {
+        return new handsim.task.Tasks(handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json")).nominalThrows(),
                 neutralPalm(), simConfig().groundHeight());
+    }
+
+    /** The shipped height task aiming at {@code goals}, or at its config's range when null. */
+    public static handsim.task.HeightTask heightTask(handsim.task.HeightGoals goals) {
+        return tasks().height(goals);
     }
 
     /** Uniform random joint angles inside the limits, shrunk by {@code margin} rad on each side. */

@@ -46,10 +46,17 @@ final class TrainCommand implements Callable<Integer> {
     @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
     Path runs;
 
+    @Option(names = "--session-episodes", paramLabel = "N",
+            description = "stop (with a checkpoint) after N more episodes; --resume goes on from there")
+    Long sessionEpisodes;
+
     @Override
     public Integer call() throws IOException {
         if ((config == null) == (resume == null)) {
             throw new IllegalArgumentException("give either --config FILE (a new run) or --resume RUN_DIR");
+        }
+        if (sessionEpisodes != null && sessionEpisodes < 1) {
+            throw new IllegalArgumentException("--session-episodes must be at least 1, got " + sessionEpisodes);
         }
         if (resume != null && !overrides.isEmpty()) {
             throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
@@ -61,7 +68,7 @@ final class TrainCommand implements Callable<Integer> {
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
             TrainRun run = resume != null ? TrainRun.resume(resume, envs, rollouts)
                     : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c));
-            run.run(System.out);
+            run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
         return 0;
     }

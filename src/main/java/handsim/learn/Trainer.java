@@ -189,7 +189,13 @@ public final class Trainer {
 
     /** {@link #runRound(List, ExecutorService, TrainingListener)} with the episodes played by {@code player}. */
     public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener) {
-        int k = (int) Math.min(config.training().parallelEpisodes(), Math.max(1, config.training().episodes() - episodes));
+        return runRound(player, listener, Integer.MAX_VALUE);
+    }
+
+    /** A round of at most {@code maxEpisodes} episodes (a session ending before the run's budget). */
+    public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener, int maxEpisodes) {
+        int k = (int) Math.min(Math.min(config.training().parallelEpisodes(), maxEpisodes),
+                Math.max(1, config.training().episodes() - episodes));
         List<Rollouts.Request> requests = new ArrayList<>();
         for (int i = 0; i < k; i++) {
             requests.add(nextRequest());

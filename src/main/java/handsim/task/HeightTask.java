@@ -50,7 +50,7 @@ public final class HeightTask implements ThrowTask {
      */
     public HeightTask(Config config, HeightGoals goals, NominalThrows nominal, Vec3 neutralPalm, double groundHeight) {
         this.config = config;
-        this.goals = goals;
+        this.goals = java.util.Objects.requireNonNull(goals, "goals");
         this.nominal = nominal;
         this.missTarget = new Vec3(neutralPalm.x(), groundHeight, neutralPalm.z());
         this.planeCenter = neutralPalm;

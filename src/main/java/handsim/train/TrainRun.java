@@ -98,11 +98,23 @@ public final class TrainRun {
 
     /** Trains until the configured number of episodes, printing progress to {@code out}. */
     public void run(PrintStream out) throws IOException {
-        int budget = config.learner().training().episodes();
+        run(out, Long.MAX_VALUE);
+    }
+
+    /**
+     * Trains until the configured number of episodes or until {@code sessionEpisodes} more
+     * episodes have been played (whichever comes first), then checkpoints: a long run can be
+     * split over several sessions with {@link #resume}.
+     */
+    public void run(PrintStream out, long sessionEpisodes) throws IOException {
+        long budget = Math.min(config.learner().training().episodes(),
+                sessionEpisodes > Long.MAX_VALUE - trainer.episodes() ? Long.MAX_VALUE : trainer.episodes() + sessionEpisodes);
         int every = config.learner().training().checkpointEveryEpisodes();
-        Progress progress = new Progress(out, budget, trainer.episodes(), config.run().progressSeconds());
-        out.printf(Locale.ROOT, "training %s (%s task, %s) in %s: episodes %d..%d, %d at a time on %d workers%n",
+        Progress progress = new Progress(out, config.learner().training().episodes(), trainer.episodes(),
+                config.run().progressSeconds());
+        out.printf(Locale.ROOT, "training %s (%s task, %s) in %s: episodes %d..%d of %d, %d at a time on %d workers%n",
                 config.run().name(), config.run().task(), config.run().object(), dir, trainer.episodes() + 1, budget,
+                config.learner().training().episodes(),
                 config.learner().training().parallelEpisodes(), rollouts.workers());
         try (MetricsCsv csv = MetricsCsv.open(dir.resolve(METRICS), trainer.episodes())) {
             TrainingListener listener = new TrainingListener() {
@@ -114,7 +126,7 @@ public final class TrainRun {
             };
             while (trainer.episodes() < budget) {
                 long before = trainer.episodes();
-                trainer.runRound(this::play, listener);
+                trainer.runRound(this::play, listener, (int) (budget - trainer.episodes()));
                 if (every > 0 && trainer.episodes() / every != before / every) {
                     saveCheckpoint();
                 }

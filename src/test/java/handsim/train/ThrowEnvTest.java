@@ -1,0 +1,81 @@
+package handsim.train;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.TestSupport;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.control.ThrowParameters;
+import handsim.control.ThrowSpace;
+import handsim.learn.Env;
+import handsim.sim.Simulator;
+import handsim.sim.ode.OdeSimulator;
+import handsim.task.EpisodeLimits;
+import handsim.task.HeightTask;
+import handsim.task.LaunchDistribution;
+import handsim.task.StateVector;
+import org.junit.jupiter.api.Test;
+
+/** The height task as an environment: one decision per THROW, terminal on a drop, reproducible from its seed. */
+class ThrowEnvTest {
+
+    private final ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
+
+    private ThrowEnvs envs(ThrowSpace space) {
+        return new ThrowEnvs("height", TestSupport.object("sphere"), () -> TestSupport.heightTask(null), cc,
+                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), space, new ThrowEnv.Settings(5, -1));
+    }
+
+    @Test
+    void aResetIsAFunctionOfItsSeedAndTheStateEndsWithTheGoal() {
+        try (Simulator a = new OdeSimulator(TestSupport.model(), TestSupport.simConfig());
+                Simulator b = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+            ThrowEnv first = envs(cc.throwSpace()).create(a), second = envs(cc.throwSpace()).create(b);
+            double[] s1 = first.reset(11);
+            second.reset(12); // another episode on the other simulator first: no state carries over
+            double[] s2 = second.reset(11);
+            assertArrayEquals(s1, s2, 0, "same seed, same first state, bit for bit");
+            assertEquals(StateVector.BASE_SIZE + 1, first.observationSize());
+            HeightTask.Config height = HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json")));
+            double goal = s1[StateVector.BASE_SIZE];
+            assertTrue(goal >= height.low() && goal <= height.high(), "goal from the task's range: " + goal);
+            // the object rests in the hand when the throw is decided: within the hold distance of the palm centre
+            double[] inPalm = {s1[6], s1[7], s1[8]};
+            assertTrue(Math.sqrt(inPalm[0] * inPalm[0] + inPalm[1] * inPalm[1] + inPalm[2] * inPalm[2]) < 0.08);
+        }
+    }
+
+    @Test
+    void theNominalThrowIsCaughtAndRewardedByEquation5() {
+        try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+            ThrowEnv env = envs(cc.throwSpace()).create(sim);
+            double[] s = env.reset(3);
+            double goal = s[StateVector.BASE_SIZE];
+            Env.Step step = env.step(cc.throwSpace().toAction(cc.nominalThrows().forHeight(goal)));
+            assertFalse(step.terminal(), "the hand-tuned throw is caught");
+            // eq. (5) for a catch: exp(-10 |apex - goal|), in (0, 1]; the nominal lands within 5 cm (README)
+            assertTrue(step.reward() > Math.exp(-10 * 0.05) && step.reward() <= 1, "reward " + step.reward());
+        }
+    }
+
+    @Test
+    void aThrowBeyondReachEndsTheEpisodeWithTheMissPenalty() {
+        // a box whose largest sideways offset (0.5 m, about 4 m/s) throws the ball far beyond the arm's reach
+        ThrowSpace wide = new ThrowSpace(new double[] {-0.5, 0.08, -0.5, -0.1, -0.1, -0.1, 0}, new double[] {0.5, 0.4, 0.5, 0.1, 0.1, 0.1, 0.2});
+        try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+            ThrowEnv env = envs(wide).create(sim);
+            env.reset(3);
+            double[] action = wide.toAction(new ThrowParameters(new handsim.math.Vec3(0, 0.2, 0.5), handsim.math.Vec3.ZERO, 0.08));
+            Env.Step step = env.step(action);
+            assertTrue(step.terminal(), "a drop is a real end");
+            assertFalse(step.truncated());
+            // eq. (5) for a miss: -0.1 |landing - p_d|, the landing a good way from below the palm
+            assertTrue(step.reward() < -0.1 * 0.3 && step.reward() > -0.1 * 5, "reward " + step.reward());
+        }
+    }
+}

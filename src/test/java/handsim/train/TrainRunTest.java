@@ -1,0 +1,86 @@
+package handsim.train;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.TestSupport;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.learn.EpisodeStats;
+import handsim.learn.MetricsCsv;
+import handsim.rollout.LocalRollouts;
+import handsim.rollout.Rollouts;
+import handsim.sim.ode.OdeSimulator;
+import handsim.task.EpisodeLimits;
+import handsim.task.LaunchDistribution;
+import handsim.task.StateVector;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A training run on a tiny budget (4 episodes of at most 2 throws, 2 per round, updates from the
+ * third decision on) writes a well-formed run folder, and a run stopped after its first
+ * checkpoint and resumed ends exactly where an uninterrupted one does.
+ */
+class TrainRunTest {
+
+    private static TrainConfig tinyConfig() {
+        Path file = Home.resolve("configs/train/height.json");
+        return TrainConfig.parse(Json.of("tiny height run", Json.withOverrides(file.toString(), Json.load(file).node(), Map.of(
+                "training.episodes", "4", "training.parallelEpisodes", "2", "training.maxDecisionsPerEpisode", "2",
+                "training.checkpointEveryEpisodes", "2", "exploration.warmupSteps", "3", "ddpg.batchSize", "2",
+                "ddpg.replayCapacity", "100", "run.workers", "1"))));
+    }
+
+    private static ThrowEnvs envs() {
+        ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        return new ThrowEnvs("height", TestSupport.object("sphere"), () -> TestSupport.heightTask(null), cc,
+                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), cc.throwSpace(), new ThrowEnv.Settings(5, -1));
+    }
+
+    private static Rollouts rollouts() {
+        return new LocalRollouts(1, () -> new OdeSimulator(TestSupport.model(), TestSupport.simConfig()));
+    }
+
+    @Test
+    void aRunWritesItsFolderAndAResumedRunEndsLikeAnUninterruptedOne(@TempDir Path tmp) throws Exception {
+        PrintStream quiet = new PrintStream(new ByteArrayOutputStream());
+        Path whole = tmp.resolve("whole"), split = tmp.resolve("split");
+        try (Rollouts r = rollouts()) {
+            TrainRun.start(whole, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet);
+            TrainRun.start(split, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet, 2);
+            assertEquals(2, MetricsCsv.read(split.resolve(TrainRun.METRICS)).size(), "the first session stopped after 2 episodes");
+            TrainRun.resume(split, envs(), r).run(quiet);
+        }
+        for (String f : List.of("config.json", "run.json", "metrics.csv", "checkpoint.zip", "policy.json", "learning.png",
+                "losses.png")) {
+            assertTrue(Files.size(split.resolve(f)) > 0, f + " written");
+        }
+        List<EpisodeStats> a = MetricsCsv.read(whole.resolve(TrainRun.METRICS)), b = MetricsCsv.read(split.resolve(TrainRun.METRICS));
+        assertEquals(4, b.size());
+        for (int i = 0; i < 4; i++) {
+            EpisodeStats x = a.get(i), y = b.get(i);
+            assertEquals(i + 1, y.episode());
+            assertEquals(x.totalSteps(), y.totalSteps(), "decisions up to episode " + (i + 1));
+            assertEquals(x.reward(), y.reward(), 0, "reward of episode " + (i + 1));
+            assertEquals(x.q0(), y.q0(), 0, "Q0 of episode " + (i + 1));
+            assertEquals(x.updates(), y.updates());
+        }
+        assertTrue(a.get(3).updates() > 0, "the run got past the warm-up and learned");
+        // the policies the two runs ship act alike, bit for bit
+        ThrowPolicyFile pa = ThrowPolicyFile.load(whole.resolve(TrainRun.POLICY)), pb = ThrowPolicyFile.load(split.resolve(TrainRun.POLICY));
+        double[] state = new double[StateVector.BASE_SIZE + 1];
+        state[StateVector.BASE_SIZE] = 1.2;
+        assertArrayEquals(pa.policy().act(state), pb.policy().act(state), 0);
+        assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(split).toJson(), "the merged config is saved in the folder");
+    }
+}
