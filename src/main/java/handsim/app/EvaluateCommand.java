@@ -18,6 +18,7 @@ import handsim.task.BoxTask;
 import handsim.task.BoxTests;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeResult;
+import handsim.task.FlipTask;
 import handsim.task.HeightErrors;
 import handsim.task.HeightGoals;
 import handsim.task.LoopRecord;
@@ -44,7 +45,9 @@ import picocli.CommandLine.Option;
                 + "then the arm catches and throws. height: --episodes episodes of up to --loops throws, a new random target "
                 + "apex every throw (or --throw-height, or --goals); summary with the height errors and their histogram. "
                 + "box: --tests box positions, each a test that succeeds after 6 hit-and-catch loops in a row; summary "
-                + "with the success rate by distance from the region's centre and a success map.")
+                + "with the success rate by distance from the region's centre and a success map. flip: --episodes episodes "
+                + "that run until a throw fails to flip or is dropped (at most --loops); summary with the consecutive "
+                + "flip-and-catch loops.")
 final class EvaluateCommand implements Callable<Integer> {
 
     /** Hit-and-catch loops in a row that make a box test a success (paper sec. 4.3). */
@@ -52,7 +55,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** Distance bands of the box report: quarters of the region's radius. */
     static final int BOX_BANDS = 4;
 
-    @Option(names = "--task", defaultValue = "height", description = "height or box (default: ${DEFAULT-VALUE})")
+    @Option(names = "--task", defaultValue = "height", description = "height, box or flip (default: ${DEFAULT-VALUE})")
     String task;
 
     @Option(names = "--controller", defaultValue = "nominal", description = "nominal or learned (default: ${DEFAULT-VALUE})")
@@ -120,6 +123,8 @@ final class EvaluateCommand implements Callable<Integer> {
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, workers)) {
             if (task.equals("box")) {
                 evaluateBox(rollouts, policies, out);
+            } else if (task.equals("flip")) {
+                evaluateFlip(rollouts, policies, out);
             } else {
                 evaluateHeight(rollouts, policies, out);
             }
@@ -133,8 +138,8 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     private void validate() {
-        if (!List.of("height", "box").contains(task)) {
-            throw new IllegalArgumentException("--task must be height or box, got " + task);
+        if (!List.of("height", "box", "flip").contains(task)) {
+            throw new IllegalArgumentException("--task must be height, box or flip, got " + task);
         }
         if (!List.of("nominal", "learned").contains(controller)) {
             throw new IllegalArgumentException("--controller must be nominal or learned, got " + controller);
@@ -189,7 +194,7 @@ final class EvaluateCommand implements Callable<Integer> {
                             + "): train one (scripts/handsim train) and give it with --policy");
         }
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
-        loaded.forTask(Runtime.tasks().create(task), object); // a policy for another task or object fails here
+        loaded.forTask(Runtime.tasks().create(task, object), object); // a policy for another task or object fails here
         return t -> loaded.forTask(t, object);
     }
 
@@ -308,7 +313,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ControllerConfig cc = Runtime.controllerConfig();
         ObjectSpec spec = Runtime.object(object);
         Tasks tasks = Runtime.tasks();
-        BoxTask reference = (BoxTask) tasks.create("box");
+        BoxTask reference = (BoxTask) tasks.create("box", object);
         List<Vec3> boxes = new ArrayList<>();
         if (goals != null) {
             readGoals(goals, "boxes", 3).forEach(b -> boxes.add(new Vec3(b[0], b[1], b[2])));
@@ -319,7 +324,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
         List<BoxTests.Test> results = rollouts.run(boxes.size(), sim -> {
-            BoxTask t = (BoxTask) tasks.create("box");
+            BoxTask t = (BoxTask) tasks.create("box", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return i -> BoxTests.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
         }, (i, r) -> {
@@ -358,6 +363,65 @@ final class EvaluateCommand implements Callable<Integer> {
         if (plot != null) {
             BoxTests.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
                     "Box tests, %s controller (%d of %d succeeded)", controller, successes, results.size()));
+            System.out.println("wrote " + plot);
+        }
+    }
+
+    // ---- flip -----------------------------------------------------------------------------
+
+    /** A flip episode's outcome: loops in a row that flipped and were caught, flips made, whether it ended in a drop. */
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped) {
+    }
+
+    private void evaluateFlip(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
+        ControllerConfig cc = Runtime.controllerConfig();
+        ObjectSpec spec = Runtime.object(object);
+        Tasks tasks = Runtime.tasks();
+        tasks.create("flip", object); // an object the flip task cannot take fails here
+        List<FlipRun> runs = rollouts.run(episodes, sim -> {
+            FlipTask t = (FlipTask) tasks.create("flip", object);
+            CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+            return i -> {
+                List<LoopRecord> made = evaluation.runWhileSuccessful(sim, seed + i, loops);
+                int flips = made.stream().mapToInt(t::flips).sum();
+                LoopRecord last = made.get(made.size() - 1);
+                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught());
+            };
+        }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
+                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop" : r.inARow() >= loops
+                        ? "reached --loops" : "ended with a throw that did not flip"));
+        double mean = runs.stream().mapToInt(FlipRun::inARow).average().orElse(0);
+        out.put("episodes_run", runs.size());
+        out.put("max_loops", loops);
+        out.put("loops_completed", runs.stream().mapToInt(FlipRun::inARow).sum());
+        out.put("loops_completed_mean", mean);
+        out.put("loops_completed_min", runs.stream().mapToInt(FlipRun::inARow).min().orElse(0));
+        out.put("loops_completed_max", runs.stream().mapToInt(FlipRun::inARow).max().orElse(0));
+        out.put("flips", runs.stream().mapToInt(FlipRun::flips).sum());
+        out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
+        out.put("drops", runs.stream().filter(FlipRun::dropped).count());
+        ArrayNode eps = out.putArray("episodes");
+        for (FlipRun r : runs) {
+            ObjectNode o = eps.addObject();
+            o.put("seed", r.seed());
+            o.put("loops_completed", r.inARow());
+            o.put("flips", r.flips());
+            o.put("throws", r.throwsMade());
+            o.put("dropped", r.dropped());
+        }
+        System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.1f "
+                + "(min %d, max %d); %d flips in %d throws; %d drops%n", controller, object, runs.size(), mean,
+                out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), out.get("flips").asInt(),
+                out.get("throws").asInt(), out.get("drops").asInt());
+        if (plot != null) {
+            double[] x = new double[runs.size()], y = new double[runs.size()];
+            for (int i = 0; i < x.length; i++) {
+                x[i] = runs.get(i).seed();
+                y[i] = runs.get(i).inARow();
+            }
+            new handsim.report.Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.1f)",
+                    controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, handsim.report.Plot.BLUE,
+                    handsim.report.Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);
         }
     }

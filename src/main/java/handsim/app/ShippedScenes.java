@@ -3,7 +3,13 @@ package handsim.app;
 import handsim.config.Home;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
+import handsim.config.ConfigException;
+import handsim.control.ThrowPolicy;
+import handsim.task.CatchEvaluation;
 import handsim.task.CatchLoopScene;
+import handsim.task.Tasks;
+import handsim.task.ThrowTask;
+import handsim.train.ThrowPolicyFile;
 import handsim.task.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.InteractiveScene;
@@ -18,14 +24,13 @@ import java.util.List;
 import java.util.stream.Stream;
 
 /**
- * The scenes this build of handsim can show. Today: the height task with the nominal controller,
- * for every object in {@code configs/objects/}. The box and flip tasks and learned controllers
- * are listed (the viewer cycles through them) and fall back to height / nominal with a note
- * until they exist.
+ * The scenes this build of handsim can show: the tasks of {@link Tasks} (height, box) with the
+ * nominal controller or a learned one, for every object in {@code configs/objects/}. The learned
+ * controller plays {@code --policy} or the policy shipped for the task and object
+ * ({@code models/policies/<task>-<object>.json}); without one, or for a task not built yet, the
+ * scene falls back (to nominal, to the height task) with a note.
  *
- * <p>To plug in a task: implement {@link InteractiveScene} (its goal, status and commands) and
- * build it in {@link #open} for its name. To plug in a learned controller: build the task's
- * evaluation with a {@code ThrowPolicy} read from {@code policy} instead of the nominal one.
+ * <p>To plug in a task: add it to {@link Tasks}; the scene is the same {@link CatchLoopScene}.
  */
 final class ShippedScenes implements SceneCatalog {
 
@@ -96,27 +101,67 @@ final class ShippedScenes implements SceneCatalog {
     public Opened open(SceneSetup wanted) {
         List<String> notes = new ArrayList<>();
         SceneSetup shown = wanted;
-        if (!wanted.task().equals("height")) {
+        if (!Tasks.NAMES.contains(wanted.task())) {
             notes.add("the " + wanted.task() + " task is not built yet: showing the height task");
             shown = shown.withTask("height");
         }
-        if (wanted.controller().equals("learned")) {
-            notes.add(learnedUnavailable() + ": using the nominal controller");
-            shown = shown.withController("nominal");
+        ThrowTask task;
+        try {
+            task = shown.task().equals("height") ? Runtime.heightTask(goals) : Runtime.tasks().create(shown.task(), shown.object());
+        } catch (IllegalArgumentException | ConfigException e) {
+            notes.add(e.getMessage() + ": showing the height task");
+            shown = shown.withTask("height");
+            task = Runtime.heightTask(goals);
         }
-        InteractiveScene scene = new CatchLoopScene(Runtime.simulator(model, simConfig),
-                Runtime.nominalEvaluation(shown.object(), Runtime.heightTask(goals)), shown.seed(), heightControl);
+        ThrowTask chosen = task;
+        ThrowPolicy throwPolicy = obs -> chosen.nominalThrow();
+        if (shown.controller().equals("learned")) {
+            try {
+                throwPolicy = learned(shown, task);
+            } catch (IllegalArgumentException e) {
+                notes.add(e.getMessage() + ": using the nominal controller");
+                shown = shown.withController("nominal");
+            }
+        }
+        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
+                Runtime.object(shown.object()), task, throwPolicy);
+        InteractiveScene scene = new CatchLoopScene(Runtime.simulator(model, simConfig), evaluation, shown.seed(), heightControl);
         return new Opened(scene, shown, notes);
     }
 
-    /** Why the learned controller cannot be shown (yet). */
-    private String learnedUnavailable() {
-        if (policy == null) {
-            return "no learned policy (give --policy FILE)";
+    /**
+     * The learned throw policy for a setup: {@code --policy} if given (and meant for this task
+     * and object), else the shipped one; the exception's message says why there is none.
+     */
+    private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
+        Path file = policy;
+        if (file == null || !matches(file, setup)) {
+            file = Home.resolve("models/policies/" + setup.task() + "-" + setup.object() + ".json");
+            if (!Files.isRegularFile(file)) {
+                throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
+                        + " (none shipped; give --policy FILE)");
+            }
         }
-        if (!Files.isRegularFile(policy)) {
-            return "learned policy " + policy + " does not exist";
+        if (!Files.isRegularFile(file)) {
+            throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
-        return "learned policies cannot be loaded yet (issue 3)";
+        try {
+            return ThrowPolicyFile.load(file).forTask(task, setup.object());
+        } catch (ConfigException e) {
+            throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
+        }
+    }
+
+    /** Whether the given --policy file exists and was trained for this task and object (else the shipped one is used). */
+    private static boolean matches(Path file, SceneSetup setup) {
+        if (!Files.isRegularFile(file)) {
+            return true; // reported as missing by the caller
+        }
+        try {
+            ThrowPolicyFile f = ThrowPolicyFile.load(file);
+            return f.task().equals(setup.task()) && f.object().equals(setup.object());
+        } catch (ConfigException e) {
+            return true; // reported as unreadable by the caller
+        }
     }
 }

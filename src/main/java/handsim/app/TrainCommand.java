@@ -8,6 +8,7 @@ import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
 import handsim.sim.SimConfig;
 import handsim.task.Tasks;
+import handsim.task.ThrowTask;
 import handsim.train.ThrowEnv;
 import handsim.train.ThrowEnvs;
 import handsim.train.TrainConfig;
@@ -46,6 +47,11 @@ final class TrainCommand implements Callable<Integer> {
     @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
     Path runs;
 
+    @Option(names = "--init-actor", paramLabel = "DATASET",
+            description = "start the actor fitted to a warm-start dataset (dataset.csv, or the warmstart run folder "
+                    + "holding it) with the config's pretrain settings, instead of from scratch")
+    Path initActor;
+
     @Option(names = "--session-episodes", paramLabel = "N",
             description = "stop (with a checkpoint) after N more episodes; --resume goes on from there")
     Long sessionEpisodes;
@@ -58,6 +64,9 @@ final class TrainCommand implements Callable<Integer> {
         if (sessionEpisodes != null && sessionEpisodes < 1) {
             throw new IllegalArgumentException("--session-episodes must be at least 1, got " + sessionEpisodes);
         }
+        if (initActor != null && resume != null) {
+            throw new IllegalArgumentException("--init-actor starts a new run: a resumed run already has its actor");
+        }
         if (resume != null && !overrides.isEmpty()) {
             throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
         }
@@ -67,7 +76,7 @@ final class TrainCommand implements Callable<Integer> {
         ThrowEnvs envs = environments(c.run(), model);
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
             TrainRun run = resume != null ? TrainRun.resume(resume, envs, rollouts)
-                    : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c));
+                    : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c), initActor);
             run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
         return 0;
@@ -90,10 +99,10 @@ final class TrainCommand implements Callable<Integer> {
     /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
     static ThrowEnvs environments(TrainConfig.Run run, HandModel model) {
         Tasks tasks = Runtime.tasks();
-        tasks.create(run.task()); // an unknown task fails here, with the list of tasks
+        ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
         ControllerConfig cc = Runtime.controllerConfig();
-        return new ThrowEnvs(run.task(), Runtime.object(run.object()), () -> tasks.create(run.task()), cc,
-                Runtime.episodeLimits(), Runtime.launches(), cc.throwSpace(),
+        return new ThrowEnvs(run.task(), Runtime.object(run.object()), () -> tasks.create(run.task(), run.object()), cc,
+                Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward()));
     }
 
@@ -106,7 +115,8 @@ final class TrainCommand implements Callable<Integer> {
     /** What a run folder records about how the run was made. */
     private ObjectNode provenance(TrainConfig c) {
         ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim train --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides)));
+        p.put("command", "scripts/handsim train --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
+                + (initActor == null ? "" : " --init-actor " + initActor));
         p.put("seed", c.learner().seed());
         p.put("commit", Provenance.gitCommit());
         p.put("started", LocalDateTime.now().toString());

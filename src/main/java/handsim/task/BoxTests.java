@@ -33,23 +33,7 @@ public final class BoxTests {
     public static Test run(CatchEvaluation evaluation, BoxTask task, Simulator sim, int index, long seed, Vec3 box,
             int required) {
         task.placeAt(box);
-        CatchThrowEpisode episode = evaluation.start(sim, seed);
-        int inARow = 0;
-        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < required) {
-            LoopRecord r = episode.tick();
-            if (r == null) {
-                continue;
-            }
-            if (r.index() == 0) {
-                if (!r.caught()) {
-                    break; // the throw-in was not caught: no throw was made
-                }
-            } else if (task.success(r)) {
-                inARow++;
-            } else {
-                break;
-            }
-        }
+        int inARow = evaluation.successesInARow(evaluation.runWhileSuccessful(sim, seed, required));
         return new Test(index, seed, box, task.distanceFromRegionCenter(box), inARow >= required, inARow);
     }
 

@@ -7,6 +7,7 @@ import handsim.control.ThrowPolicy;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.Simulator;
+import java.util.List;
 import java.util.SplittableRandom;
 
 /**
@@ -67,6 +68,41 @@ public final class CatchEvaluation {
             }
         }
         return episode.result(seed);
+    }
+
+    /**
+     * Runs the episode of {@code seed} until a throw fails the task ({@link ThrowTask#success})
+     * or {@code maxThrows} throws succeeded in a row: the loops up to and including the first
+     * failure (a dropped throw-in ends it before any throw).
+     */
+    public List<LoopRecord> runWhileSuccessful(Simulator sim, long seed, int maxThrows) {
+        CatchThrowEpisode episode = start(sim, seed);
+        int inARow = 0;
+        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows) {
+            LoopRecord r = episode.tick();
+            if (r == null) {
+                continue;
+            }
+            if (r.index() == 0 ? !r.caught() : !task.success(r)) {
+                break;
+            }
+            inARow += r.index() == 0 ? 0 : 1;
+        }
+        return List.copyOf(episode.loops());
+    }
+
+    /** Throws in a row at the start of {@code loops} that did what the task asks. */
+    public int successesInARow(List<LoopRecord> loops) {
+        int n = 0;
+        for (LoopRecord r : loops) {
+            if (r.index() > 0) {
+                if (!task.success(r)) {
+                    break;
+                }
+                n++;
+            }
+        }
+        return n;
     }
 
     /** Resets {@code sim} and starts the episode of {@code seed}: the object is in the air, nothing ticked yet. */

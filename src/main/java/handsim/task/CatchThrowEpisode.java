@@ -68,6 +68,7 @@ public final class CatchThrowEpisode {
     private Flight flight;
     private Vec3 lastAxis;
     private double flightRotation;
+    private Vec3 catchPoint;
     private Vec3 landing;
     private ThrowParameters loopThrow;
     private double loopGoal = Double.NaN;
@@ -250,15 +251,16 @@ public final class CatchThrowEpisode {
     }
 
     /**
-     * The long axis's turning while the object flies free: from the first tick of the loop's
-     * throw without a hand contact (the release) to the first contact after it (the catch).
+     * The throw's flight: from the first tick of the loop's throw without a hand contact (the
+     * release) to the first contact after it (the catch), where the object is recorded; in
+     * between, how far its long axis turns.
      */
     private void trackFlight(Observation obs) {
-        if (longAxis == null || loops.isEmpty() || flight == Flight.LANDED) {
+        if (loops.isEmpty() || flight == Flight.LANDED) {
             return;
         }
         boolean touching = obs.handTouchedObject();
-        Vec3 axis = obs.object().orientation().rotate(longAxis);
+        Vec3 axis = longAxis == null ? null : obs.object().orientation().rotate(longAxis);
         if (flight == Flight.BEFORE_RELEASE) {
             if (!touching && state.phase() != Phase.MIDDLE) {
                 flight = Flight.FLYING;
@@ -266,7 +268,8 @@ public final class CatchThrowEpisode {
             }
         } else if (touching) {
             flight = Flight.LANDED;
-        } else {
+            catchPoint = obs.object().position();
+        } else if (axis != null) {
             flightRotation += Math.acos(Math.max(-1, Math.min(1, lastAxis.dot(axis))));
             lastAxis = axis;
         }
@@ -312,6 +315,7 @@ public final class CatchThrowEpisode {
         boxDistance = Double.POSITIVE_INFINITY;
         flight = Flight.BEFORE_RELEASE;
         flightRotation = 0;
+        catchPoint = null;
         landing = null;
         loopThrow = loops.isEmpty() ? null : state.currentThrow();
         loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
@@ -328,7 +332,7 @@ public final class CatchThrowEpisode {
         }
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
                 loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
-                index == 0 || longAxis == null ? Double.NaN : flightRotation,
+                index == 0 || longAxis == null ? Double.NaN : flightRotation, catchPoint,
                 maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;

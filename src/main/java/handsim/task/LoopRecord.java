@@ -19,12 +19,14 @@ import handsim.math.Vec3;
  * @param flightRotation how far the object's long axis turned while the object flew free of the
  *     hand, from the release of the throw to the first touch of the catch (rad, accumulated over
  *     the flight, so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
+ * @param catchPoint where the object's centre was at the first touch of the catch after the
+ *     throw's release (m, world; null for loop 0 and when nothing touched it again)
  * @param maxPenetration deepest hand-object penetration during the loop (m)
  * @param maxLimitExcess largest excursion of any joint beyond its limit (rad)
  * @param peakTorqueRatio largest |tau| / strength of any DOF (1 = at the human limit; PD torques are clamped)
  * @param duration simulated length of the loop (s)
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
-        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation,
+        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, Vec3 catchPoint,
         double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

@@ -17,13 +17,18 @@ import java.util.List;
 public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight) {
 
     /** Task names, in the viewer's order. */
-    public static final List<String> NAMES = List.of("height", "box");
+    public static final List<String> NAMES = List.of("height", "box", "flip");
 
-    /** A new task {@code name} with its shipped config; the height task over its config's goal range. */
-    public ThrowTask create(String name) {
+    /**
+     * A new task {@code name} for {@code object} with its shipped config; the height task over
+     * its config's goal range. The flip task fails for an object its config does not list.
+     */
+    public ThrowTask create(String name, String object) {
         return switch (name) {
             case "height" -> height(null);
             case "box" -> new BoxTask(BoxTask.Config.parse(Json.load(Home.resolve("configs/tasks/box.json"))), nominal,
+                    neutralPalm);
+            case "flip" -> new FlipTask(FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))), object,
                     neutralPalm);
             default -> throw new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
         };

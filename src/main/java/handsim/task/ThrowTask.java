@@ -1,6 +1,7 @@
 package handsim.task;
 
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
 
@@ -32,6 +33,14 @@ public interface ThrowTask {
 
     /** The hand-tuned throw parameters for the current goal (the nominal controller's THROW). */
     ThrowParameters nominalThrow();
+
+    /**
+     * The box of throw parameters the learner's actions map onto for this task: the
+     * controller's ({@code fallback}) unless the task needs another.
+     */
+    default ThrowSpace throwSpace(ThrowSpace fallback) {
+        return fallback;
+    }
 
     /** The reward of a finished throw loop (loop index >= 1): the paper's eq. (5), (6) or (7). */
     double reward(LoopRecord loop);

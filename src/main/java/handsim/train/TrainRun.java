@@ -23,7 +23,8 @@ import java.util.Locale;
  * row per episode, flushed as it comes), {@code checkpoint.zip} (the whole learner, written
  * atomically every {@code checkpointEveryEpisodes} episodes and at the end), the learning
  * curves {@code learning.png} and {@code losses.png} (paper Fig. 6, 9) and {@code policy.json},
- * the actor as a shipped throw policy, refreshed with every checkpoint. A run killed at any
+ * the actor as a shipped throw policy, refreshed with every checkpoint and also kept as
+ * {@code policies/episode-N.json} (to find when the run reached a level). A run killed at any
  * moment resumes from its last checkpoint; the episodes after it are played again, the same.
  *
  * <p>Episodes are played in rounds of {@code parallelEpisodes} on the rollout workers (each
@@ -36,6 +37,8 @@ public final class TrainRun {
     public static final String CHECKPOINT = "checkpoint.zip";
     public static final String METRICS = "metrics.csv";
     public static final String POLICY = "policy.json";
+    /** A warm-started run's copy of its imitation dataset. */
+    public static final String INIT_DATASET = "init-dataset.csv";
 
     private final Path dir;
     private final TrainConfig config;
@@ -57,14 +60,36 @@ public final class TrainRun {
      */
     public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
             ObjectNode provenance) throws IOException {
+        return start(dir, config, envs, rollouts, provenance, null);
+    }
+
+    /**
+     * A new run whose actor starts fitted to an imitation dataset (the warm start of sec. 4.4;
+     * {@code initDataset} is a {@link Warmstart} dataset or its folder, copied into the run), or
+     * from scratch when null.
+     */
+    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
+            ObjectNode provenance, Path initDataset) throws IOException {
         if (Files.exists(dir.resolve(CONFIG))) {
             throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
         }
+        double[][][] data = initDataset == null ? null
+                : Warmstart.readDataset(initDataset, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
         Outputs.writeJson(dir.resolve("run.json"), provenance);
-        Trainer trainer = Trainer.create(config.learner(), envs.observationSize(), handsim.control.ThrowParameters.SIZE);
-        return new TrainRun(dir, config, envs, rollouts, trainer);
+        if (initDataset != null) {
+            Files.copy(Files.isDirectory(initDataset) ? initDataset.resolve(Warmstart.DATASET) : initDataset,
+                    dir.resolve(INIT_DATASET));
+        }
+        return new TrainRun(dir, config, envs, rollouts, freshTrainer(config, envs, data));
+    }
+
+    /** The trainer of a run's start: from scratch, or with the actor fitted to the imitation data. */
+    private static Trainer freshTrainer(TrainConfig config, ThrowEnvs envs, double[][][] data) {
+        int n = envs.observationSize(), k = handsim.control.ThrowParameters.SIZE;
+        return data == null ? Trainer.create(config.learner(), n, k)
+                : Trainer.withAgent(config.learner(), Warmstart.pretrainedAgent(config, n, k, data, null));
     }
 
     /** The configuration saved in a run folder. */
@@ -83,8 +108,10 @@ public final class TrainRun {
     public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts) throws IOException {
         TrainConfig config = savedConfig(dir);
         Path checkpoint = dir.resolve(CHECKPOINT);
+        Path dataset = dir.resolve(INIT_DATASET);
         Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
-                : Trainer.create(config.learner(), envs.observationSize(), handsim.control.ThrowParameters.SIZE);
+                : freshTrainer(config, envs, Files.isRegularFile(dataset)
+                        ? Warmstart.readDataset(dataset, envs.observationSize(), handsim.control.ThrowParameters.SIZE) : null);
         return new TrainRun(dir, config, envs, rollouts, trainer);
     }
 
@@ -156,8 +183,9 @@ public final class TrainRun {
         provenance.set("config", config.toJson());
         Policy actor = trainer.agent().policy(config.run().task() + " task, " + config.run().object() + ", run "
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
-        new ThrowPolicyFile(config.run().task(), config.run().object(), envs.space(), actor, provenance)
-                .save(dir.resolve(POLICY));
+        ThrowPolicyFile file = new ThrowPolicyFile(config.run().task(), config.run().object(), envs.space(), actor, provenance);
+        file.save(dir.resolve(POLICY));
+        file.save(dir.resolve("policies").resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
         List<EpisodeStats> stats = MetricsCsv.read(dir.resolve(METRICS));
         String title = config.run().task() + " task, " + config.run().object() + " (" + config.run().name() + ", seed "
                 + config.learner().seed() + ")";

@@ -48,13 +48,19 @@ class CommandsTest {
     @Test
     void unbuiltTasksAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
-        SceneCatalog.Opened opened = catalog.open(new SceneSetup("box", "sphere", "learned", 1));
+        // no policy is shipped for the cuboid: learned falls back to nominal
+        SceneCatalog.Opened opened = catalog.open(new SceneSetup("flip", "cuboid", "learned", 1));
         try (InteractiveScene scene = opened.scene()) {
-            assertEquals(new SceneSetup("height", "sphere", "nominal", 1), opened.setup());
+            assertEquals(new SceneSetup("height", "cuboid", "nominal", 1), opened.setup());
             String notes = String.join(" | ", opened.notes());
-            assertTrue(notes.contains("box task is not built yet") && notes.contains("--policy"), notes);
+            assertTrue(notes.contains("flip task is not built yet") && notes.contains("--policy"), notes);
             scene.advance(0.01);
             assertTrue(scene.time() > 0, "the fallback scene runs");
+        }
+        SceneCatalog.Opened box = catalog.open(new SceneSetup("box", "sphere", "nominal", 1));
+        try (InteractiveScene scene = box.scene()) {
+            assertEquals(new SceneSetup("box", "sphere", "nominal", 1), box.setup(), "the box task is built");
+            assertTrue(scene.goal() instanceof handsim.task.Goal.Box, "it draws its box");
         }
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> catalog.validate(new SceneSetup("height", "football", "nominal", 1)));

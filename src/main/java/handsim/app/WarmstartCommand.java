@@ -1,0 +1,98 @@
+package handsim.app;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ThrowParameters;
+import handsim.learn.ActorPretraining;
+import handsim.learn.DdpgAgent;
+import handsim.model.HandModel;
+import handsim.report.Outputs;
+import handsim.rollout.Rollouts;
+import handsim.task.Tasks;
+import handsim.train.ThrowEnvs;
+import handsim.train.Warmstart;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim warmstart}: the imitation warm start of paper sec. 4.4 — CMA-ES throws for many
+ * initial conditions, the successful ones as a dataset, and the actor pretrained on it.
+ */
+@Command(name = "warmstart", mixinStandardHelpOptions = true,
+        description = "For seeded initial conditions (an object caught, a throw to choose) search the throw with CMA-ES "
+                + "(commons-math3), keep the successful (state, action) pairs as dataset.csv and pretrain the actor on "
+                + "them; writes runs/warmstart__<name>__<seed>__<time>/. Start DDPG from it with "
+                + "train --config ... --init-actor RUN_DIR.")
+final class WarmstartCommand implements Callable<Integer> {
+
+    @Option(names = "--config", paramLabel = "FILE", required = true,
+            description = "warm-start config, e.g. configs/train/flip-warmstart.json")
+    Path config;
+
+    @Option(names = "--runs", paramLabel = "DIR", description = "where the run folder goes (default: runs/)")
+    Path runs;
+
+    @Override
+    public Integer call() throws Exception {
+        Warmstart.Config c = Warmstart.Config.load(config);
+        HandModel model = Runtime.model(null);
+        ThrowEnvs envs = TrainCommand.environments(c.train().run(), model);
+        Tasks tasks = Runtime.tasks();
+        double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
+        String time = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
+        Path dir = (runs != null ? runs : Home.resolve("runs")).resolve("warmstart__" + c.train().run().name() + "__"
+                + c.train().learner().seed() + "__" + time);
+        Files.createDirectories(dir);
+        Outputs.writeJson(dir.resolve("config.json"), c.toJson());
+        ObjectNode run = Json.mapper().createObjectNode();
+        run.put("command", "scripts/handsim warmstart --config " + config);
+        run.put("commit", Provenance.gitCommit());
+        run.put("started", LocalDateTime.now().toString());
+        Outputs.writeJson(dir.resolve("run.json"), run);
+        System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "
+                + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
+                c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());
+        List<Warmstart.Search> searches;
+        try (Rollouts rollouts = Runtime.rollouts(model, Runtime.simConfig(), c.train().run().workers())) {
+            searches = Warmstart.search(c, envs, nominal, rollouts, System.out);
+        }
+        ArrayNode all = Json.mapper().createArrayNode();
+        for (Warmstart.Search s : searches) {
+            ObjectNode o = all.addObject();
+            o.put("seed", s.seed());
+            o.put("reward", s.reward());
+            o.put("evaluations", s.evaluations());
+            o.put("kept", s.kept());
+            o.set("action", Json.array(s.action()));
+            o.set("throw", Json.array(envs.space().fromAction(s.action()).toArray()));
+        }
+        Outputs.writeJson(dir.resolve("searches.json"), all);
+        long kept = searches.stream().filter(Warmstart.Search::kept).count();
+        System.out.printf(Locale.ROOT, "%d of %d initial conditions gave a throw with reward >= %.2f%n", kept, searches.size(),
+                c.warmstart().keepReward());
+        Warmstart.writeDataset(dir.resolve(Warmstart.DATASET), searches);
+        double[][][] data = Warmstart.readDataset(dir, envs.observationSize(), ThrowParameters.SIZE);
+        ActorPretraining.Result[] fit = new ActorPretraining.Result[1];
+        DdpgAgent agent = Warmstart.pretrainedAgent(c.train(), envs.observationSize(), ThrowParameters.SIZE, data, fit);
+        Warmstart.plotPretraining(dir.resolve("pretraining.png"), fit[0], "Actor pretraining on " + kept + " CMA-ES throws ("
+                + c.train().run().task() + ", " + c.train().run().object() + ")");
+        ObjectNode provenance = Json.mapper().createObjectNode();
+        provenance.put("warmstart", dir.getFileName().toString());
+        provenance.put("examples", kept);
+        Warmstart.policyFile(agent, c.train(), envs, provenance).save(dir.resolve("pretrained-policy.json"));
+        double[] v = fit[0].validationLoss(), t = fit[0].trainLoss();
+        System.out.printf(Locale.ROOT, "pretrained the actor: training loss %.4f -> %.4f, held-out %.4f -> %.4f (%d / %d examples)%n",
+                t[0], t[t.length - 1], v[0], v[v.length - 1], fit[0].trainExamples(), fit[0].validationExamples());
+        System.out.println("wrote " + dir.resolve(Warmstart.DATASET) + ", searches.json, pretraining.png, pretrained-policy.json");
+        return 0;
+    }
+}

@@ -1,0 +1,164 @@
+package handsim.task;
+
+import handsim.config.Json;
+import handsim.control.ThrowParameters;
+import handsim.control.ThrowSpace;
+import handsim.math.Vec3;
+import handsim.sim.Simulator;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from how far
+ * the object's long axis turned in flight ({@link LoopRecord#flightRotation}, accumulated from
+ * the release to the first touch of the catch): {@code flips = floor((rotation + tolerance) /
+ * flipAngle)}, with flipAngle half a turn for a can (end for end is the same can) and a whole
+ * turn for a club (the handle comes back to the hand). Reward eq. (7) as read in SPEC.md: a
+ * caught throw that flipped scores {@code exp(-sharpness |p_p - p_d|) + flipBonus}, anything else
+ * {@code -missWeight |p_p - p_d|}; p_p is where the object was caught (or came down, when
+ * dropped) and p_d a spot above the hand where a good flip comes down.
+ */
+public final class FlipTask implements ThrowTask {
+
+    /**
+     * One object's flip.
+     *
+     * @param flipAngle turning of the long axis that makes one flip (rad)
+     * @param nominal the hand-tuned flip throw
+     */
+    public record ObjectFlip(double flipAngle, ThrowParameters nominal) {
+    }
+
+    /**
+     * {@code configs/tasks/flip.json}.
+     *
+     * @param tolerance a flip is counted this much short of its angle (rad)
+     * @param sharpness the 10 of eq. (7) (1/m)
+     * @param missWeight the 0.1 of eq. (7)'s miss term (1/m)
+     * @param flipBonus r_flip of eq. (7)
+     * @param targetOffset p_d relative to the neutral palm centre (m, world)
+     * @param space the box of throw parameters: flips need far more palm rotation than the other tasks
+     * @param objects the objects that can be flipped, by name
+     */
+    public record Config(double tolerance, double sharpness, double missWeight, double flipBonus, Vec3 targetOffset,
+            ThrowSpace space, Map<String, ObjectFlip> objects) {
+
+        public Config {
+            objects = Map.copyOf(objects);
+        }
+
+        public static Config parse(Json j) {
+            j.allow("comment");
+            Json objs = j.get("objects");
+            objs.allow("comment");
+            Map<String, ObjectFlip> flips = new LinkedHashMap<>();
+            ThrowSpace space = ThrowSpace.parse(j.get("throwSpace"));
+            for (String name : objs.fieldNames()) {
+                if (name.equals("comment")) {
+                    continue;
+                }
+                Json o = objs.get(name);
+                o.allow("comment");
+                Json n = o.get("nominal");
+                n.allow("comment");
+                ThrowParameters nominal = new ThrowParameters(n.vec3("dOffset"), n.vec3("rTargetDeg").times(Math.PI / 180),
+                        n.number("tOpen", 0, 10));
+                n.requireNoUnknownFields();
+                if (!space.contains(nominal)) {
+                    throw o.fieldError("nominal", "must lie inside throwSpace, got " + nominal);
+                }
+                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal));
+                o.requireNoUnknownFields();
+            }
+            Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)), j.positive("sharpness"),
+                    j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"), space, flips);
+            j.requireNoUnknownFields();
+            return c;
+        }
+    }
+
+    private final Config config;
+    private final String object;
+    private final ObjectFlip flip;
+    private final Vec3 target;
+
+    /** The flip task for {@code object}, which the config must list. */
+    public FlipTask(Config config, String object, Vec3 neutralPalm) {
+        this.config = config;
+        this.object = object;
+        this.flip = config.objects().get(object);
+        if (flip == null) {
+            throw new IllegalArgumentException("the flip task has no settings for a " + object + " (configs/tasks/flip.json lists "
+                    + String.join(", ", config.objects().keySet()) + ")");
+        }
+        this.target = neutralPalm.plus(config.targetOffset());
+    }
+
+    /** Whole flips made by a loop's throw (0 for loop 0). */
+    public int flips(LoopRecord loop) {
+        double rotation = loop.flightRotation();
+        return Double.isNaN(rotation) ? 0 : (int) Math.floor((rotation + config.tolerance()) / flip.flipAngle());
+    }
+
+    public String object() {
+        return object;
+    }
+
+    @Override
+    public String name() {
+        return "flip";
+    }
+
+    @Override
+    public int goalSize() {
+        return 0;
+    }
+
+    @Override
+    public void start(Simulator sim, long seed) {
+        // nothing to set up: every throw aims at a flip
+    }
+
+    @Override
+    public double[] goal() {
+        return new double[0];
+    }
+
+    @Override
+    public void advance() {
+        // the goal does not change
+    }
+
+    @Override
+    public ThrowParameters nominalThrow() {
+        return flip.nominal();
+    }
+
+    @Override
+    public ThrowSpace throwSpace(ThrowSpace fallback) {
+        return config.space();
+    }
+
+    /** eq. (7). */
+    @Override
+    public double reward(LoopRecord loop) {
+        Vec3 where = loop.caught() ? loop.catchPoint() : loop.landing();
+        double d = where == null ? 0 : where.distance(target);
+        return success(loop) ? Math.exp(-config.sharpness() * d) + config.flipBonus() : -config.missWeight() * d;
+    }
+
+    @Override
+    public boolean success(LoopRecord loop) {
+        return loop.caught() && flips(loop) >= 1;
+    }
+
+    @Override
+    public Goal drawing() {
+        return new Goal.None();
+    }
+
+    @Override
+    public String moveGoal(Vec3 delta) {
+        return "the flip task has no goal to move";
+    }
+}

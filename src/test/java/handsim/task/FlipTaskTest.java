@@ -1,0 +1,63 @@
+package handsim.task;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.TestSupport;
+import handsim.math.Vec3;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Flip detection and eq. (7) on scripted flights: the count comes from the long axis's turning
+ * in flight (half turns for a can, whole turns for a club, 45 deg of tolerance in the shipped
+ * configs/tasks/flip.json).
+ */
+class FlipTaskTest {
+
+    private final FlipTask can = (FlipTask) TestSupport.tasks().create("flip", "can");
+    private final FlipTask club = (FlipTask) TestSupport.tasks().create("flip", "club");
+    private final Vec3 target = TestSupport.neutralPalm().plus(new Vec3(0, 0.12, 0));
+
+    private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where) {
+        return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
+                Math.toRadians(rotationDeg), caught ? where : null, 0, 0, 0, 1);
+    }
+
+    @Test
+    void flipsAreCountedInWholeFlipAnglesWithTheTolerance() {
+        // can: 180 deg a flip, counted from 135 deg on
+        assertEquals(0, can.flips(flight(0, true, target)));
+        assertEquals(0, can.flips(flight(130, true, target)), "a near miss: 5 deg short of the tolerance");
+        assertEquals(1, can.flips(flight(140, true, target)));
+        assertEquals(1, can.flips(flight(180, true, target)));
+        assertEquals(2, can.flips(flight(360, true, target)), "two half turns");
+        // club: a whole turn brings the handle back
+        assertEquals(0, club.flips(flight(180, true, target)));
+        assertEquals(1, club.flips(flight(320, true, target)));
+        assertEquals(2, club.flips(flight(720, true, target)));
+        assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
+                null, 0, 0, 0, 1)), "the throw-in is no flip");
+    }
+
+    @Test
+    void rewardFollowsEquation7() {
+        Vec3 off = target.plus(new Vec3(0.05, 0, 0));
+        // flipped and caught 5 cm from p_d: exp(-10 * 0.05) + r_flip
+        assertEquals(Math.exp(-0.5) + 1, can.reward(flight(180, true, off)), 1e-12);
+        assertTrue(can.success(flight(180, true, off)));
+        // caught without a flip: the miss term, -0.1 |p_p - p_d|
+        assertEquals(-0.1 * 0.05, can.reward(flight(20, true, off)), 1e-12);
+        assertFalse(can.success(flight(20, true, off)));
+        // flipped but dropped 1 m away
+        Vec3 ground = target.plus(new Vec3(0, 0, 1));
+        assertEquals(-0.1 * 1, can.reward(flight(200, false, ground)), 1e-12);
+    }
+
+    @Test
+    void anObjectTheConfigDoesNotListIsRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TestSupport.tasks().create("flip", "sphere"));
+        assertTrue(e.getMessage().contains("sphere") && e.getMessage().contains("can"), e.getMessage());
+    }
+}
