@@ -56,6 +56,15 @@ public final class TestSupport {
                 neutralPalm(), simConfig().groundHeight());
     }
 
+    /** Height task environments over the shipped configs, with actions mapped onto {@code space}. */
+    public static handsim.train.ThrowEnvs heightEnvs(handsim.control.ThrowSpace space) {
+        handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
+        return new handsim.train.ThrowEnvs("height", object("sphere"), () -> heightTask(null), cc,
+                handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), space,
+                new handsim.train.ThrowEnv.Settings(5, -1));
+    }
+
     /** The shipped height task aiming at {@code goals}, or at its config's range when null. */
     public static handsim.task.HeightTask heightTask(handsim.task.HeightGoals goals) {
         return tasks().height(goals);

@@ -14,9 +14,7 @@ import handsim.control.ThrowSpace;
 import handsim.learn.Env;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.EpisodeLimits;
 import handsim.task.HeightTask;
-import handsim.task.LaunchDistribution;
 import handsim.task.StateVector;
 import org.junit.jupiter.api.Test;
 
@@ -25,10 +23,8 @@ class ThrowEnvTest {
 
     private final ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
 
-    private ThrowEnvs envs(ThrowSpace space) {
-        return new ThrowEnvs("height", TestSupport.object("sphere"), () -> TestSupport.heightTask(null), cc,
-                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), space, new ThrowEnv.Settings(5, -1));
+    private static ThrowEnvs envs(ThrowSpace space) {
+        return TestSupport.heightEnvs(space);
     }
 
     @Test

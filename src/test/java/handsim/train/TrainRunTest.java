@@ -13,8 +13,6 @@ import handsim.learn.MetricsCsv;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.EpisodeLimits;
-import handsim.task.LaunchDistribution;
 import handsim.task.StateVector;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -41,10 +39,7 @@ class TrainRunTest {
     }
 
     private static ThrowEnvs envs() {
-        ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        return new ThrowEnvs("height", TestSupport.object("sphere"), () -> TestSupport.heightTask(null), cc,
-                EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), cc.throwSpace(), new ThrowEnv.Settings(5, -1));
+        return TestSupport.heightEnvs(ControllerConfig.load(Home.resolve("configs/controller.json")).throwSpace());
     }
 
     private static Rollouts rollouts() {
