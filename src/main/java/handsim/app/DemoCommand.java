@@ -9,6 +9,9 @@ import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
+import handsim.task.HeightTask;
+import handsim.train.ThrowPolicyFile;
+import java.nio.file.Files;
 import handsim.task.LoopRecord;
 import handsim.task.SceneSetup;
 import java.nio.file.Path;
@@ -41,8 +44,8 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (default: ${DEFAULT-VALUE})")
     String object;
 
-    @Option(names = "--heights", paramLabel = "LOW:HIGH", defaultValue = "1.1:1.3",
-            description = "range of the random apex goals, m (default: ${DEFAULT-VALUE}, where the nominal throws loop reliably)")
+    @Option(names = "--heights", paramLabel = "LOW:HIGH",
+            description = "range of the random apex goals, m (default: the height task's trained range, configs/tasks/height.json)")
     String heights;
 
     @Option(names = "--out", paramLabel = "DIR", description = "run folder (default: runs/demo__<object>__<seed>__<time>)")
@@ -51,22 +54,38 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--headless", description = "run headless even when a display is available")
     boolean headless;
 
-    /** The best controller handsim ships for the sphere (the learned one once a trained policy ships). */
-    static final String BEST_CONTROLLER = "nominal";
+    /** The controller the headless run uses. */
+    private String controllerShown = "nominal";
+
+    /** The best controller handsim ships for the height task with {@code object}: learned when a policy ships for it. */
+    static String bestController(String object) {
+        return Files.isRegularFile(shippedPolicy(object)) ? "learned" : "nominal";
+    }
+
+    static Path shippedPolicy(String object) {
+        return Home.resolve("models/policies/height-" + object + ".json");
+    }
 
     @Override
     public Integer call() throws Exception {
         if (loops < 1 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [1, 100000], got " + loops);
         }
-        HeightGoals goals = parseHeights(heights);
+        HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
+        String controller = bestController(object);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", object, BEST_CONTROLLER, seed), goals, null, 0, null);
+            return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(goals));
+        HeightTask task = Runtime.heightTask(goals);
+        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
+                Runtime.object(object), task, controller.equals("learned")
+                        ? ThrowPolicyFile.load(shippedPolicy(object)).forTask(task, object) : obs -> task.nominalThrow());
+        System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
+                ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
+        this.controllerShown = controller;
         Path dir = out != null ? out : Home.resolve("runs/demo__" + object + "__" + seed + "__"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
 
@@ -120,7 +139,7 @@ final class DemoCommand implements Callable<Integer> {
         }
         ObjectNode summary = JsonNodeFactory.instance.objectNode();
         summary.put("command", "demo");
-        summary.put("controller", "nominal");
+        summary.put("controller", controllerShown);
         summary.put("object", object);
         summary.put("seed", seed);
         summary.put("heights_low_m", goals.low());
@@ -135,7 +154,7 @@ final class DemoCommand implements Callable<Integer> {
         summary.put("wall_s", wall);
         Outputs.writeJson(dir.resolve("summary.json"), summary);
         Outputs.writeString(dir.resolve("loops.csv"), csv.toString());
-        new Plot("Apex height per throw (" + object + ", nominal controller)", "throw", "height (m)")
+        new Plot("Apex height per throw (" + object + ", " + controllerShown + " controller)", "throw", "height (m)")
                 .add("goal", index, goal, Plot.RED, Plot.Style.POINTS)
                 .add("apex reached", index, apex, Plot.BLUE, Plot.Style.LINE_POINTS)
                 .writePng(dir.resolve("apex.png"));

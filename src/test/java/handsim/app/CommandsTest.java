@@ -46,14 +46,14 @@ class CommandsTest {
     }
 
     @Test
-    void unbuiltTasksAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
+    void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
-        // no policy is shipped for the cuboid: learned falls back to nominal
+        // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
         SceneCatalog.Opened opened = catalog.open(new SceneSetup("flip", "cuboid", "learned", 1));
         try (InteractiveScene scene = opened.scene()) {
             assertEquals(new SceneSetup("height", "cuboid", "nominal", 1), opened.setup());
             String notes = String.join(" | ", opened.notes());
-            assertTrue(notes.contains("flip task is not built yet") && notes.contains("--policy"), notes);
+            assertTrue(notes.contains("flip task has no settings for a cuboid") && notes.contains("--policy"), notes);
             scene.advance(0.01);
             assertTrue(scene.time() > 0, "the fallback scene runs");
         }
