@@ -3,6 +3,7 @@ package handsim.task;
 import handsim.config.Json;
 import handsim.control.NominalThrows;
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
 import java.util.Locale;
@@ -22,8 +23,10 @@ public final class HeightTask implements ThrowTask {
      * @param sharpness the 10 of eq. (5) (1/m)
      * @param missWeight the 0.1 of eq. (5)'s miss term (1/m)
      * @param successTolerance a caught throw within this of its target counts as a success (m)
+     * @param space the box of throw parameters for this task
      */
-    public record Config(double low, double high, double sharpness, double missWeight, double successTolerance) {
+    public record Config(double low, double high, double sharpness, double missWeight, double successTolerance,
+            ThrowSpace space) {
 
         public static Config parse(Json j) {
             j.allow("comment");
@@ -32,7 +35,7 @@ public final class HeightTask implements ThrowTask {
                 throw j.fieldError("goalRange", "heights must be above 0 m, got " + range[0]);
             }
             Config c = new Config(range[0], range[1], j.positive("sharpness"), j.number("missWeight", 0, 100),
-                    j.positive("successTolerance"));
+                    j.positive("successTolerance"), ThrowSpace.parse(j.get("throwSpace")));
             j.requireNoUnknownFields();
             return c;
         }
@@ -102,6 +105,11 @@ public final class HeightTask implements ThrowTask {
     @Override
     public ThrowParameters nominalThrow() {
         return nominal.forHeight(goals.current());
+    }
+
+    @Override
+    public ThrowSpace throwSpace(ThrowSpace fallback) {
+        return config.space();
     }
 
     /** eq. (5), corrected. */
