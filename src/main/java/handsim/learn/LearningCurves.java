@@ -35,4 +35,12 @@ public final class LearningCurves {
     private static double[] column(List<EpisodeStats> stats, ToDoubleFunction<EpisodeStats> f) {
         return stats.stream().mapToDouble(f).toArray();
     }
+
+    /**
+     * The first episode whose moving-average reward reaches {@code target}, or -1 if none does:
+     * how the warm start's speed-up is read off two learning curves (paper Fig. 10).
+     */
+    public static long firstEpisodeReaching(List<EpisodeStats> stats, double target) {
+        return stats.stream().filter(e -> e.averageReward() >= target).mapToLong(EpisodeStats::episode).findFirst().orElse(-1);
+    }
 }

@@ -67,4 +67,33 @@ class CommandsTest {
         assertTrue(e.getMessage().contains("--object") && e.getMessage().contains("football"), e.getMessage());
         assertEquals("sphere", catalog.objects().get(0), "the paper's sphere first");
     }
+
+    @Test
+    void curvesOverlaysRunsAndNamesAFolderThatIsNotARun(@TempDir Path dir) throws Exception {
+        for (String run : new String[] {"cold", "warm"}) {
+            Files.createDirectories(dir.resolve(run));
+            try (var csv = handsim.learn.MetricsCsv.open(dir.resolve(run).resolve(handsim.train.TrainRun.METRICS), 0)) {
+                for (int e = 1; e <= 10; e++) { // warm climbs twice as fast as cold: reaches cold's final 1.0 at episode 5
+                    double average = Math.min(1.0, (run.equals("warm") ? 0.2 : 0.1) * e);
+                    csv.onEpisode(new handsim.learn.EpisodeStats(e, e, 1, average, average, Double.NaN, Double.NaN, Double.NaN, 0,
+                            false, Double.NaN, 0.0));
+                }
+            }
+        }
+        PrintStream stdout = System.out;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+            code = Main.run("curves", dir.resolve("cold").toString(), dir.resolve("warm").toString(), "--out",
+                    dir.resolve("c.png").toString());
+        } finally {
+            System.setOut(stdout);
+        }
+        String text = printed.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, text);
+        assertTrue(text.contains("warm: 10 episodes, final average 1.000; reaches 1.000 at episode 5"), text);
+        assertTrue(Files.size(dir.resolve("c.png")) > 1000, "the chart is written");
+        assertEquals(2, Main.run("curves", dir.toString(), "--out", dir.resolve("d.png").toString()), "a folder without metrics.csv");
+    }
 }

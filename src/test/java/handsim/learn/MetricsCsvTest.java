@@ -35,4 +35,17 @@ class MetricsCsvTest {
         LearningCurves.plotLosses(dir.resolve("losses.png"), MetricsCsv.read(file), "toy");
         assertTrue(Files.size(png) > 1000 && Files.size(dir.resolve("losses.png")) > 1000);
     }
+
+    @Test
+    void theFirstEpisodeReachingATargetAverageIsFoundOrMinusOne() {
+        // average rewards 0.1, 0.3, 0.6, 0.5: 0.5 is first reached at episode 3, 10 never
+        double[] averages = {0.1, 0.3, 0.6, 0.5};
+        List<EpisodeStats> s = new java.util.ArrayList<>();
+        for (int e = 1; e <= averages.length; e++) {
+            s.add(new EpisodeStats(e, e, 1, averages[e - 1], averages[e - 1], Double.NaN, Double.NaN, Double.NaN, 0, false,
+                    Double.NaN, 0.0));
+        }
+        assertEquals(3, LearningCurves.firstEpisodeReaching(s, 0.5));
+        assertEquals(-1, LearningCurves.firstEpisodeReaching(s, 10));
+    }
 }
