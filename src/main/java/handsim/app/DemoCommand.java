@@ -63,7 +63,7 @@ final class DemoCommand implements Callable<Integer> {
     }
 
     static Path shippedPolicy(String object) {
-        return Home.resolve("models/policies/height-" + object + ".json");
+        return ThrowPolicyFile.shipped("height", object);
     }
 
     @Override

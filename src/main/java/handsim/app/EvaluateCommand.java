@@ -179,7 +179,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** The policy file of the learned controller: --policy, or the shipped one for the task and object. */
     private Path policyFile() {
-        return policy != null ? policy : Home.resolve("models/policies/" + task + "-" + object + ".json");
+        return policy != null ? policy : ThrowPolicyFile.shipped(task, object);
     }
 
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy. */

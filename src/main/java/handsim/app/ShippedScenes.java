@@ -136,7 +136,7 @@ final class ShippedScenes implements SceneCatalog {
     private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
         Path file = policy;
         if (file == null || !matches(file, setup)) {
-            file = Home.resolve("models/policies/" + setup.task() + "-" + setup.object() + ".json");
+            file = ThrowPolicyFile.shipped(setup.task(), setup.object());
             if (!Files.isRegularFile(file)) {
                 throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
                         + " (none shipped; give --policy FILE)");

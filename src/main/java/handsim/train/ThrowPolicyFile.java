@@ -2,6 +2,7 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.report.Outputs;
+import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
@@ -27,6 +28,11 @@ public record ThrowPolicyFile(String task, String object, ThrowSpace space, Poli
         if (policy.actionSize() != ThrowParameters.SIZE) {
             throw new IllegalArgumentException("a throw policy has " + ThrowParameters.SIZE + " outputs, this one " + policy.actionSize());
         }
+    }
+
+    /** Where handsim ships the policy of {@code task} with {@code object}: {@code models/policies/<task>-<object>.json}. */
+    public static Path shipped(String task, String object) {
+        return Home.resolve("models/policies/" + task + "-" + object + ".json");
     }
 
     public static ThrowPolicyFile load(Path file) {

@@ -73,8 +73,7 @@ public final class TrainRun {
         if (Files.exists(dir.resolve(CONFIG))) {
             throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
         }
-        double[][][] data = initDataset == null ? null
-                : Warmstart.readDataset(initDataset, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
+        double[][][] data = initDataset == null ? null : readDataset(initDataset, envs); // read before anything is written
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
         Outputs.writeJson(dir.resolve("run.json"), provenance);
@@ -90,6 +89,11 @@ public final class TrainRun {
         int n = envs.observationSize(), k = handsim.control.ThrowParameters.SIZE;
         return data == null ? Trainer.create(config.learner(), n, k)
                 : Trainer.withAgent(config.learner(), Warmstart.pretrainedAgent(config, n, k, data, null));
+    }
+
+    /** A warm-start dataset as (states, actions) sized for {@code envs}' observations and the throw parameters. */
+    private static double[][][] readDataset(Path file, ThrowEnvs envs) throws IOException {
+        return Warmstart.readDataset(file, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
     }
 
     /** The configuration saved in a run folder. */
@@ -110,8 +114,7 @@ public final class TrainRun {
         Path checkpoint = dir.resolve(CHECKPOINT);
         Path dataset = dir.resolve(INIT_DATASET);
         Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
-                : freshTrainer(config, envs, Files.isRegularFile(dataset)
-                        ? Warmstart.readDataset(dataset, envs.observationSize(), handsim.control.ThrowParameters.SIZE) : null);
+                : freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null);
         return new TrainRun(dir, config, envs, rollouts, trainer);
     }
 

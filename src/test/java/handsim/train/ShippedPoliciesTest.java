@@ -48,7 +48,7 @@ class ShippedPoliciesTest {
     static CatchEvaluation evaluation(String task, String object) {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         ThrowTask t = TestSupport.tasks().create(task, object);
-        Path file = Home.resolve("models/policies/" + task + "-" + object + ".json");
+        Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,
                 ThrowPolicyFile.load(file).forTask(t, object));
