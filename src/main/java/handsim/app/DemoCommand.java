@@ -82,7 +82,7 @@ final class DemoCommand implements Callable<Integer> {
         HeightTask task = Runtime.heightTask(goals);
         CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
                 Runtime.object(object), task, controller.equals("learned")
-                        ? ThrowPolicyFile.load(shippedPolicy(object)).forTask(task, object) : obs -> task.nominalThrow());
+                        ? ThrowPolicyFile.load(shippedPolicy(object)).forTask(task, Runtime.object(object)) : obs -> task.nominalThrow());
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
                 ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;

@@ -97,7 +97,7 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
     Path json;
 
-    @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop (height) or test (box) as CSV")
+    @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop (height, flip) or test (box) as CSV")
     Path csv;
 
     @Option(names = "--plot", paramLabel = "FILE",
@@ -194,8 +194,9 @@ final class EvaluateCommand implements Callable<Integer> {
                             + "): train one (scripts/handsim train) and give it with --policy");
         }
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
-        loaded.forTask(Runtime.tasks().create(task, object), object); // a policy for another task or object fails here
-        return t -> loaded.forTask(t, object);
+        ObjectSpec spec = Runtime.object(object);
+        loaded.forTask(Runtime.tasks().create(task, object), spec); // a policy for another task or object fails here
+        return t -> loaded.forTask(t, spec);
     }
 
     /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */
@@ -286,6 +287,14 @@ final class EvaluateCommand implements Callable<Integer> {
                 r.maxPenetration() * 1e3, Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
     }
 
+    private static String csvNumber(double v) {
+        return Double.isNaN(v) ? "" : String.format(Locale.ROOT, "%.4f", v);
+    }
+
+    private static String csvPoint(Vec3 p) {
+        return p == null ? ",," : csvNumber(p.x()) + "," + csvNumber(p.y()) + "," + csvNumber(p.z());
+    }
+
     /** Aggregate figures: the fields plus natural-motion figures (limits, penetration, torque). */
     static ObjectNode summarize(List<EpisodeResult> results, double wallSeconds) {
         ObjectNode s = JsonNodeFactory.instance.objectNode();
@@ -370,7 +379,7 @@ final class EvaluateCommand implements Callable<Integer> {
     // ---- flip -----------------------------------------------------------------------------
 
     /** A flip episode's outcome: loops in a row that flipped and were caught, flips made, whether it ended in a drop. */
-    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped) {
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, List<LoopRecord> loops) {
     }
 
     private void evaluateFlip(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
@@ -385,11 +394,26 @@ final class EvaluateCommand implements Callable<Integer> {
                 List<LoopRecord> made = evaluation.runWhileSuccessful(sim, seed + i, loops);
                 int flips = made.stream().mapToInt(t::flips).sum();
                 LoopRecord last = made.get(made.size() - 1);
-                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught());
+                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught(), made);
             };
         }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
                 r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop" : r.inARow() >= loops
                         ? "reached --loops" : "ended with a throw that did not flip"));
+        if (csv != null) {
+            FlipTask t = (FlipTask) tasks.create("flip", object);
+            StringBuilder rows = new StringBuilder("seed,loop,caught,flips,flight_rotation_deg,apex_m,catch_x,catch_y,catch_z,"
+                    + "landing_x,landing_y,landing_z,reward\n");
+            for (FlipRun r : runs) {
+                for (LoopRecord loop : r.loops()) {
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%d,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
+                            t.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())), csvNumber(loop.apexHeight()),
+                            csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
+                            loop.index() == 0 ? "" : csvNumber(t.reward(loop))));
+                }
+            }
+            Outputs.writeString(csv, rows.toString());
+            System.out.println("wrote " + csv);
+        }
         double mean = runs.stream().mapToInt(FlipRun::inARow).average().orElse(0);
         out.put("episodes_run", runs.size());
         out.put("max_loops", loops);

@@ -146,7 +146,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.load(file).forTask(task, setup.object());
+            return ThrowPolicyFile.load(file).forTask(task, Runtime.object(setup.object()));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

@@ -6,7 +6,9 @@ import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
+import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
+import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowEnv;
@@ -101,9 +103,10 @@ final class TrainCommand implements Callable<Integer> {
         Tasks tasks = Runtime.tasks();
         ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
         ControllerConfig cc = Runtime.controllerConfig();
-        return new ThrowEnvs(run.task(), Runtime.object(run.object()), () -> tasks.create(run.task(), run.object()), cc,
+        ObjectSpec object = Runtime.object(run.object());
+        return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
                 Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
-                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward()));
+                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward()), new StateVector(run.state(), object.longAxis()));
     }
 
     private Path runFolder(TrainConfig c) {

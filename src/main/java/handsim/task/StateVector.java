@@ -2,32 +2,108 @@ package handsim.task;
 
 import handsim.control.Observation;
 import handsim.kin.Frame;
+import handsim.math.Quat;
 import handsim.math.Vec3;
+import java.util.Locale;
+import java.util.Optional;
 
 /**
- * The learner's state at a THROW decision (paper sec. 3.7): {@code (p_h, r_h, p_p, r_p, goal)},
- * with p_h and r_h the palm centre's position and rotation vector (world), p_p the object's
- * position in the palm frame, r_p the object's rotation vector (world), and the task's goal
- * appended ("we embed the goal to the state vector", sec. 4.2). Rotation vectors are those of the
- * quaternion with w >= 0 (angle at most pi).
+ * The learner's state at a THROW decision (paper sec. 3.7): the palm's position and rotation, the
+ * object's position in the palm frame and its orientation, with the task's goal appended ("we
+ * embed the goal to the state vector", sec. 4.2). Two encodings of the same facts:
+ *
+ * <ul>
+ * <li>{@link Encoding#PAPER}: {@code (p_h, r_h, p_p, r_p, goal)} as printed, with r_h and r_p
+ * rotation vectors (world) of the quaternion with w >= 0. The neutral palm is turned almost
+ * exactly pi, where a rotation vector jumps to its opposite with the slightest change, and a can
+ * that flipped end for end has a rotation vector unrelated to the same can before the flip.</li>
+ * <li>{@link Encoding#CONTINUOUS} (handsim's reading): {@code (p_h, R_h e_x, R_h e_y, p_p, a a^T,
+ * goal)}: the palm's rotation as the first two columns of its matrix, continuous everywhere
+ * (Zhou et al. 2019, "On the continuity of rotation representations"), and the object's long
+ * axis {@code a} in the palm frame as the six entries of the dyad {@code a a^T}
+ * (xx, yy, zz, xy, xz, yz), which are the same for a and -a (a can end for end is the same can)
+ * and ignore the spin about the axis, which a can or club does not care about; zeros for an object
+ * without a long axis (a sphere's orientation does not matter to its throw).</li>
+ * </ul>
  */
 public final class StateVector {
 
-    /** Entries before the goal. */
-    public static final int BASE_SIZE = 12;
+    /** How the state is written; a policy file records the one it was trained with. */
+    public enum Encoding {
+        PAPER(12), CONTINUOUS(18);
 
-    private StateVector() {
+        private final int baseSize;
+
+        Encoding(int baseSize) {
+            this.baseSize = baseSize;
+        }
+
+        /** Entries before the goal. */
+        public int baseSize() {
+            return baseSize;
+        }
+
+        /** The name in configs and policy files: {@code paper} or {@code continuous}. */
+        public String label() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+
+        /** The encoding named {@code label}; fails naming the choices. */
+        public static Encoding parse(String label) {
+            for (Encoding e : values()) {
+                if (e.label().equals(label)) {
+                    return e;
+                }
+            }
+            throw new IllegalArgumentException("must be paper or continuous, got \"" + label + "\"");
+        }
+    }
+
+    private final Encoding encoding;
+    private final Vec3 longAxis;
+
+    /** The state of {@code encoding} for an object with the given long axis (object frame). */
+    public StateVector(Encoding encoding, Optional<Vec3> longAxis) {
+        this.encoding = encoding;
+        this.longAxis = longAxis.map(Vec3::normalized).orElse(null);
+    }
+
+    public Encoding encoding() {
+        return encoding;
+    }
+
+    /** Entries of the state with a goal of {@code goalSize} entries. */
+    public int size(int goalSize) {
+        return encoding.baseSize() + goalSize;
     }
 
     /** The state for {@code obs} and the goal of the throw about to be made. */
-    public static double[] encode(Observation obs, double[] goal) {
-        double[] s = new double[BASE_SIZE + goal.length];
+    public double[] encode(Observation obs, double[] goal) {
+        int base = encoding.baseSize();
+        double[] s = new double[base + goal.length];
         Frame palm = obs.palm();
+        Quat palmRotation = palm.rotation();
+        Vec3 objectInPalm = palmRotation.inverseRotate(obs.object().position().minus(palm.origin()));
         put(s, 0, palm.origin());
-        put(s, 3, palm.rotation().toRotationVector());
-        put(s, 6, palm.rotation().inverseRotate(obs.object().position().minus(palm.origin())));
-        put(s, 9, obs.object().orientation().toRotationVector());
-        System.arraycopy(goal, 0, s, BASE_SIZE, goal.length);
+        if (encoding == Encoding.PAPER) {
+            put(s, 3, palmRotation.toRotationVector());
+            put(s, 6, objectInPalm);
+            put(s, 9, obs.object().orientation().toRotationVector());
+        } else {
+            put(s, 3, palmRotation.xAxis());
+            put(s, 6, palmRotation.yAxis());
+            put(s, 9, objectInPalm);
+            if (longAxis != null) {
+                Vec3 a = palmRotation.inverseRotate(obs.object().orientation().rotate(longAxis));
+                s[12] = a.x() * a.x();
+                s[13] = a.y() * a.y();
+                s[14] = a.z() * a.z();
+                s[15] = a.x() * a.y();
+                s[16] = a.x() * a.z();
+                s[17] = a.y() * a.z();
+            }
+        }
+        System.arraycopy(goal, 0, s, base, goal.length);
         return s;
     }
 

@@ -18,15 +18,17 @@ public final class LearnedThrowPolicy implements ThrowPolicy {
     private final Policy policy;
     private final ThrowSpace space;
     private final ThrowTask task;
+    private final StateVector state;
 
-    public LearnedThrowPolicy(Policy policy, ThrowSpace space, ThrowTask task) {
+    public LearnedThrowPolicy(Policy policy, ThrowSpace space, ThrowTask task, StateVector state) {
         this.policy = policy;
         this.space = space;
         this.task = task;
+        this.state = state;
     }
 
     @Override
     public ThrowParameters decide(Observation observation) {
-        return space.fromAction(policy.act(StateVector.encode(observation, task.goal())));
+        return space.fromAction(policy.act(state.encode(observation, task.goal())));
     }
 }

@@ -54,6 +54,7 @@ public final class ThrowEnv implements Env {
     private final Simulator sim;
     private final ThrowTask task;
     private final ThrowSpace space;
+    private final StateVector stateVector;
     private final Settings settings;
     private final ChosenThrow chosen = new ChosenThrow();
     private final CatchEvaluation evaluation;
@@ -65,18 +66,19 @@ public final class ThrowEnv implements Env {
      * @param evaluation builds the episodes from the task and a throw policy (the environment's
      *     own, which plays the chosen actions)
      */
-    public ThrowEnv(Simulator sim, ThrowTask task, ThrowSpace space, Settings settings,
+    public ThrowEnv(Simulator sim, ThrowTask task, ThrowSpace space, StateVector stateVector, Settings settings,
             Function<ThrowPolicy, CatchEvaluation> evaluation) {
         this.sim = sim;
         this.task = task;
         this.space = space;
+        this.stateVector = stateVector;
         this.settings = settings;
         this.evaluation = evaluation.apply(chosen);
     }
 
     @Override
     public int observationSize() {
-        return StateVector.BASE_SIZE + task.goalSize();
+        return stateVector.size(task.goalSize());
     }
 
     @Override
@@ -96,7 +98,7 @@ public final class ThrowEnv implements Env {
             try {
                 Observation first = episode.runUntilThrowDue();
                 if (first != null) {
-                    state = StateVector.encode(first, task.goal());
+                    state = stateVector.encode(first, task.goal());
                     return state.clone();
                 }
             } catch (SimulationDiverged e) {
@@ -128,9 +130,9 @@ public final class ThrowEnv implements Env {
         LoopRecord thrown = loops.get(loops.size() - 1);
         double reward = task.reward(thrown);
         if (next == null) {
-            return new Step(StateVector.encode(episode.observe(), task.goal()), reward, true, false);
+            return new Step(stateVector.encode(episode.observe(), task.goal()), reward, true, false);
         }
-        state = StateVector.encode(next, task.goal());
+        state = stateVector.encode(next, task.goal());
         return new Step(state.clone(), reward, false, false);
     }
 

@@ -7,6 +7,7 @@ import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.LaunchDistribution;
+import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.util.function.Supplier;
 
@@ -17,16 +18,16 @@ import java.util.function.Supplier;
  * @param tasks a fresh task per environment (tasks hold an episode's goals)
  */
 public record ThrowEnvs(String task, ObjectSpec object, Supplier<ThrowTask> tasks, ControllerConfig controller,
-        EpisodeLimits limits, LaunchDistribution launches, ThrowSpace space, ThrowEnv.Settings settings) {
+        EpisodeLimits limits, LaunchDistribution launches, ThrowSpace space, ThrowEnv.Settings settings, StateVector state) {
 
     /** An environment on {@code sim} (which it owns from then on). */
     public ThrowEnv create(Simulator sim) {
         ThrowTask t = tasks.get();
-        return new ThrowEnv(sim, t, space, settings, policy -> new CatchEvaluation(controller, limits, launches, object, t, policy));
+        return new ThrowEnv(sim, t, space, state, settings, policy -> new CatchEvaluation(controller, limits, launches, object, t, policy));
     }
 
     /** The length of the state the environments give. */
     public int observationSize() {
-        return handsim.task.StateVector.BASE_SIZE + tasks.get().goalSize();
+        return state.size(tasks.get().goalSize());
     }
 }

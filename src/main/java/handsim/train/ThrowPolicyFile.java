@@ -7,6 +7,7 @@ import handsim.config.Json;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
+import handsim.sim.ObjectSpec;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.io.IOException;
@@ -15,12 +16,14 @@ import java.nio.file.Path;
 /**
  * A trained throw policy on disk ({@code models/policies/*.json}): the plain-Java actor with its
  * observation statistics, and what it was trained for, so that it is never used for something
- * else: the task, the object, the length of its state, the box of throw parameters its [-1, 1]
- * actions map onto, and where it came from (run, config, seed, commit).
+ * else: the task, the object, the encoding and length of its state, the box of throw parameters
+ * its [-1, 1] actions map onto, and where it came from (run, config, seed, commit).
  *
+ * @param state the state encoding it reads ({@code "state"} in the file, {@code paper} when absent)
  * @param provenance free-form facts about the training run that made it
  */
-public record ThrowPolicyFile(String task, String object, ThrowSpace space, Policy policy, ObjectNode provenance) {
+public record ThrowPolicyFile(String task, String object, StateVector.Encoding state, ThrowSpace space, Policy policy,
+        ObjectNode provenance) {
 
     public static final String FORMAT = "handsim-throw-policy";
 
@@ -48,9 +51,15 @@ public record ThrowPolicyFile(String task, String object, ThrowSpace space, Poli
             throw s.error(e.getMessage());
         }
         s.requireNoUnknownFields();
+        StateVector.Encoding state;
+        try {
+            state = StateVector.Encoding.parse(j.string("state", StateVector.Encoding.PAPER.label()));
+        } catch (IllegalArgumentException e) {
+            throw j.fieldError("state", e.getMessage());
+        }
         ThrowPolicyFile f;
         try {
-            f = new ThrowPolicyFile(j.string("task"), j.string("object"), space, Policy.parse(j.get("policy")),
+            f = new ThrowPolicyFile(j.string("task"), j.string("object"), state, space, Policy.parse(j.get("policy")),
                     (ObjectNode) j.get("provenance").node());
         } catch (IllegalArgumentException e) {
             throw j.fieldError("policy", e.getMessage());
@@ -64,6 +73,7 @@ public record ThrowPolicyFile(String task, String object, ThrowSpace space, Poli
         root.put("format", FORMAT);
         root.put("task", task);
         root.put("object", object);
+        root.put("state", state.label());
         ObjectNode s = root.putObject("throwSpace");
         s.set("low", Json.array(space.low()));
         s.set("high", Json.array(space.high()));
@@ -76,16 +86,17 @@ public record ThrowPolicyFile(String task, String object, ThrowSpace space, Poli
      * The policy as the controller's throw policy for {@code task}; fails with a message naming
      * the mismatch if it was trained for another task, object or state.
      */
-    public LearnedThrowPolicy forTask(ThrowTask task, String object) {
-        if (!this.task.equals(task.name()) || !this.object.equals(object)) {
+    public LearnedThrowPolicy forTask(ThrowTask task, ObjectSpec object) {
+        if (!this.task.equals(task.name()) || !this.object.equals(object.name())) {
             throw new IllegalArgumentException("this policy was trained for the " + this.task + " task with a " + this.object
-                    + ", not the " + task.name() + " task with a " + object);
+                    + ", not the " + task.name() + " task with a " + object.name());
         }
-        int size = StateVector.BASE_SIZE + task.goalSize();
+        StateVector encoder = new StateVector(state, object.longAxis());
+        int size = encoder.size(task.goalSize());
         if (policy.observationSize() != size) {
             throw new IllegalArgumentException("this policy reads " + policy.observationSize() + " state entries, the "
-                    + task.name() + " task gives " + size);
+                    + task.name() + " task gives " + size + " (" + state.label() + " state)");
         }
-        return new LearnedThrowPolicy(policy, space, task);
+        return new LearnedThrowPolicy(policy, space, task, encoder);
     }
 }

@@ -3,6 +3,7 @@ package handsim.train;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.TrainingConfig;
+import handsim.task.StateVector;
 import java.nio.file.Path;
 
 /**
@@ -24,20 +25,31 @@ public record TrainConfig(Run run, TrainingConfig learner) {
      * @param firstCatchAttempts launches tried per episode before the object is caught
      * @param divergedReward reward of a throw whose simulation diverged (an episode end)
      * @param progressSeconds seconds between progress lines
+     * @param state how the learner's state is written ({@code paper} when absent: the runs made
+     *     before there was a choice)
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
-            double progressSeconds) {
+            double progressSeconds, StateVector.Encoding state) {
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
-                    j.positive("progressSeconds"));
+                    j.positive("progressSeconds"), encoding(j));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
             j.requireNoUnknownFields();
             return r;
+        }
+
+        private static StateVector.Encoding encoding(Json j) {
+            String label = j.string("state", StateVector.Encoding.PAPER.label());
+            try {
+                return StateVector.Encoding.parse(label);
+            } catch (IllegalArgumentException e) {
+                throw j.fieldError("state", e.getMessage());
+            }
         }
     }
 

@@ -186,7 +186,7 @@ public final class TrainRun {
         provenance.set("config", config.toJson());
         Policy actor = trainer.agent().policy(config.run().task() + " task, " + config.run().object() + ", run "
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
-        ThrowPolicyFile file = new ThrowPolicyFile(config.run().task(), config.run().object(), envs.space(), actor, provenance);
+        ThrowPolicyFile file = new ThrowPolicyFile(config.run().task(), config.run().object(), envs.state().encoding(), envs.space(), actor, provenance);
         file.save(dir.resolve(POLICY));
         file.save(dir.resolve("policies").resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
         List<EpisodeStats> stats = MetricsCsv.read(dir.resolve(METRICS));

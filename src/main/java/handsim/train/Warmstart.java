@@ -194,6 +194,6 @@ public final class Warmstart {
     public static ThrowPolicyFile policyFile(DdpgAgent agent, TrainConfig c, ThrowEnvs envs, ObjectNode provenance) {
         Policy actor = agent.policy("pretrained on the warm-start dataset (" + c.run().task() + ", " + c.run().object() + ")",
                 "ThrowSpace, see throwSpace");
-        return new ThrowPolicyFile(c.run().task(), c.run().object(), envs.space(), actor, provenance);
+        return new ThrowPolicyFile(c.run().task(), c.run().object(), envs.state().encoding(), envs.space(), actor, provenance);
     }
 }

@@ -51,6 +51,6 @@ class ShippedPoliciesTest {
         Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,
-                ThrowPolicyFile.load(file).forTask(t, object));
+                ThrowPolicyFile.load(file).forTask(t, TestSupport.object(object)));
     }
 }

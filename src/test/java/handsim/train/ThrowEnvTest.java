@@ -36,9 +36,9 @@ class ThrowEnvTest {
             second.reset(12); // another episode on the other simulator first: no state carries over
             double[] s2 = second.reset(11);
             assertArrayEquals(s1, s2, 0, "same seed, same first state, bit for bit");
-            assertEquals(StateVector.BASE_SIZE + 1, first.observationSize());
+            assertEquals(StateVector.Encoding.PAPER.baseSize() + 1, first.observationSize());
             HeightTask.Config height = HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json")));
-            double goal = s1[StateVector.BASE_SIZE];
+            double goal = s1[StateVector.Encoding.PAPER.baseSize()];
             assertTrue(goal >= height.low() && goal <= height.high(), "goal from the task's range: " + goal);
             // the object rests in the hand when the throw is decided: within the hold distance of the palm centre
             double[] inPalm = {s1[6], s1[7], s1[8]};
@@ -51,7 +51,7 @@ class ThrowEnvTest {
         try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
             ThrowEnv env = envs(cc.throwSpace()).create(sim);
             double[] s = env.reset(3);
-            double goal = s[StateVector.BASE_SIZE];
+            double goal = s[StateVector.Encoding.PAPER.baseSize()];
             Env.Step step = env.step(cc.throwSpace().toAction(cc.nominalThrows().forHeight(goal)));
             assertFalse(step.terminal(), "the hand-tuned throw is caught");
             // eq. (5) for a catch: exp(-10 |apex - goal|), in (0, 1]; the nominal lands within 5 cm (README)

@@ -46,13 +46,13 @@ class ThrowPolicyFileTest {
 
     @Test
     void saveThenLoadGivesIdenticalActions(@TempDir Path dir) throws Exception {
-        ThrowPolicyFile f = new ThrowPolicyFile("height", "sphere", cc.throwSpace(), randomActor(StateVector.BASE_SIZE + 1, 5),
+        ThrowPolicyFile f = new ThrowPolicyFile("height", "sphere", StateVector.Encoding.PAPER, cc.throwSpace(), randomActor(StateVector.Encoding.PAPER.baseSize() + 1, 5),
                 Json.mapper().createObjectNode().put("run", "test"));
         f.save(dir.resolve("p.json"));
         ThrowPolicyFile back = ThrowPolicyFile.load(dir.resolve("p.json"));
         SplittableRandom r = new SplittableRandom(9);
         for (int k = 0; k < 20; k++) {
-            double[] s = new double[StateVector.BASE_SIZE + 1];
+            double[] s = new double[StateVector.Encoding.PAPER.baseSize() + 1];
             for (int i = 0; i < s.length; i++) {
                 s[i] = 2 * r.nextDouble() - 1;
             }
@@ -64,14 +64,14 @@ class ThrowPolicyFileTest {
 
     @Test
     void aPolicyIsRefusedForAnotherTaskOrObject() {
-        ThrowPolicyFile f = new ThrowPolicyFile("height", "sphere", cc.throwSpace(), randomActor(StateVector.BASE_SIZE + 1, 5),
+        ThrowPolicyFile f = new ThrowPolicyFile("height", "sphere", StateVector.Encoding.PAPER, cc.throwSpace(), randomActor(StateVector.Encoding.PAPER.baseSize() + 1, 5),
                 Json.mapper().createObjectNode());
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> f.forTask(TestSupport.heightTask(HeightGoals.fixed(1.2)), "can"));
+                () -> f.forTask(TestSupport.heightTask(HeightGoals.fixed(1.2)), TestSupport.object("can")));
         assertTrue(e.getMessage().contains("sphere") && e.getMessage().contains("can"), e.getMessage());
-        ThrowPolicyFile wrongSize = new ThrowPolicyFile("height", "sphere", cc.throwSpace(), randomActor(15, 5),
+        ThrowPolicyFile wrongSize = new ThrowPolicyFile("height", "sphere", StateVector.Encoding.PAPER, cc.throwSpace(), randomActor(15, 5),
                 Json.mapper().createObjectNode());
-        e = assertThrows(IllegalArgumentException.class, () -> wrongSize.forTask(TestSupport.heightTask(HeightGoals.fixed(1.2)), "sphere"));
+        e = assertThrows(IllegalArgumentException.class, () -> wrongSize.forTask(TestSupport.heightTask(HeightGoals.fixed(1.2)), TestSupport.object("sphere")));
         assertTrue(e.getMessage().contains("15"), e.getMessage());
     }
 

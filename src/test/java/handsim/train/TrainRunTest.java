@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
 import handsim.config.Home;
+import handsim.config.ConfigException;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.learn.EpisodeStats;
@@ -73,9 +74,18 @@ class TrainRunTest {
         assertTrue(a.get(3).updates() > 0, "the run got past the warm-up and learned");
         // the policies the two runs ship act alike, bit for bit
         ThrowPolicyFile pa = ThrowPolicyFile.load(whole.resolve(TrainRun.POLICY)), pb = ThrowPolicyFile.load(split.resolve(TrainRun.POLICY));
-        double[] state = new double[StateVector.BASE_SIZE + 1];
-        state[StateVector.BASE_SIZE] = 1.2;
+        double[] state = new double[StateVector.Encoding.PAPER.baseSize() + 1];
+        state[StateVector.Encoding.PAPER.baseSize()] = 1.2;
         assertArrayEquals(pa.policy().act(state), pb.policy().act(state), 0);
         assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(split).toJson(), "the merged config is saved in the folder");
+    }
+
+    @Test
+    void aConfigNamesAnUnknownStateEncoding() {
+        Path file = Home.resolve("configs/train/height.json");
+        ConfigException e = org.junit.jupiter.api.Assertions.assertThrows(ConfigException.class, () -> TrainConfig.parse(
+                Json.of("bad", Json.withOverrides(file.toString(), Json.load(file).node(), Map.of("run.state", "euler")))));
+        assertTrue(e.getMessage().contains("state") && e.getMessage().contains("euler"), e.getMessage());
+        assertEquals(StateVector.Encoding.PAPER, tinyConfig().run().state(), "the height run keeps the printed state");
     }
 }
