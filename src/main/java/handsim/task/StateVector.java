@@ -48,10 +48,10 @@ public final class StateVector {
             return name().toLowerCase(Locale.ROOT);
         }
 
-        /** The encoding named {@code label}; fails naming the choices. */
+        /** The encoding named {@code label} (in any case); fails naming the choices. */
         public static Encoding parse(String label) {
             for (Encoding e : values()) {
-                if (e.label().equals(label)) {
+                if (e.label().equalsIgnoreCase(label)) {
                     return e;
                 }
             }

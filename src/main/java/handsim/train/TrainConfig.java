@@ -68,7 +68,9 @@ public record TrainConfig(Run run, TrainingConfig learner) {
     /** This configuration in the file's format ({@code parse(toJson())} gives it back). */
     public ObjectNode toJson() {
         ObjectNode root = Json.mapper().createObjectNode();
-        root.set("run", Json.mapper().valueToTree(run));
+        ObjectNode runNode = Json.mapper().valueToTree(run);
+        runNode.put("state", run.state().label());
+        root.set("run", runNode);
         root.setAll(learner.toJson());
         return root;
     }

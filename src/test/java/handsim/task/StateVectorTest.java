@@ -84,6 +84,7 @@ class StateVectorTest {
     void encodingsAreNamedInConfigs() {
         assertEquals(StateVector.Encoding.CONTINUOUS, StateVector.Encoding.parse("continuous"));
         assertEquals(StateVector.Encoding.PAPER, StateVector.Encoding.parse("paper"));
+        assertEquals(StateVector.Encoding.PAPER, StateVector.Encoding.parse("PAPER"), "the enum's own name reads back too");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> StateVector.Encoding.parse("euler"));
         assertTrue(e.getMessage().contains("euler"), e.getMessage());
     }
