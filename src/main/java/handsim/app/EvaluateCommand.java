@@ -386,7 +386,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ControllerConfig cc = Runtime.controllerConfig();
         ObjectSpec spec = Runtime.object(object);
         Tasks tasks = Runtime.tasks();
-        tasks.create("flip", object); // an object the flip task cannot take fails here
+        FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
         List<FlipRun> runs = rollouts.run(episodes, sim -> {
             FlipTask t = (FlipTask) tasks.create("flip", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
@@ -400,15 +400,14 @@ final class EvaluateCommand implements Callable<Integer> {
                 r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop" : r.inARow() >= loops
                         ? "reached --loops" : "ended with a throw that did not flip"));
         if (csv != null) {
-            FlipTask t = (FlipTask) tasks.create("flip", object);
             StringBuilder rows = new StringBuilder("seed,loop,caught,flips,flight_rotation_deg,apex_m,catch_x,catch_y,catch_z,"
                     + "landing_x,landing_y,landing_z,reward\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
                     rows.append(String.format(Locale.ROOT, "%d,%d,%s,%d,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
-                            t.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())), csvNumber(loop.apexHeight()),
+                            flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
-                            loop.index() == 0 ? "" : csvNumber(t.reward(loop))));
+                            loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
                 }
             }
             Outputs.writeString(csv, rows.toString());

@@ -1,5 +1,6 @@
 package handsim.task;
 
+import handsim.config.Json;
 import handsim.control.Observation;
 import handsim.kin.Frame;
 import handsim.math.Quat;
@@ -56,6 +57,18 @@ public final class StateVector {
                 }
             }
             throw new IllegalArgumentException("must be paper or continuous, got \"" + label + "\"");
+        }
+
+        /**
+         * The {@code state} field of a training config's run section or of a policy file;
+         * {@code paper} when absent (what was written before there was a choice).
+         */
+        public static Encoding read(Json j) {
+            try {
+                return parse(j.string("state", PAPER.label()));
+            } catch (IllegalArgumentException e) {
+                throw j.fieldError("state", e.getMessage());
+            }
         }
     }
 

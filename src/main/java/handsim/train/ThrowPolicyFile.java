@@ -51,12 +51,7 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
             throw s.error(e.getMessage());
         }
         s.requireNoUnknownFields();
-        StateVector.Encoding state;
-        try {
-            state = StateVector.Encoding.parse(j.string("state", StateVector.Encoding.PAPER.label()));
-        } catch (IllegalArgumentException e) {
-            throw j.fieldError("state", e.getMessage());
-        }
+        StateVector.Encoding state = StateVector.Encoding.read(j);
         ThrowPolicyFile f;
         try {
             f = new ThrowPolicyFile(j.string("task"), j.string("object"), state, space, Policy.parse(j.get("policy")),

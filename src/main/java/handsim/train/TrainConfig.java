@@ -35,21 +35,12 @@ public record TrainConfig(Run run, TrainingConfig learner) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
-                    j.positive("progressSeconds"), encoding(j));
+                    j.positive("progressSeconds"), StateVector.Encoding.read(j));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
             j.requireNoUnknownFields();
             return r;
-        }
-
-        private static StateVector.Encoding encoding(Json j) {
-            String label = j.string("state", StateVector.Encoding.PAPER.label());
-            try {
-                return StateVector.Encoding.parse(label);
-            } catch (IllegalArgumentException e) {
-                throw j.fieldError("state", e.getMessage());
-            }
         }
     }
 
