@@ -55,6 +55,8 @@ public final class CatchThrowEpisode {
     private long touchedSinceTick;
     private List<WorldSnapshot.StaticBox> boxes = List.of();
     private Vec3 longAxis;
+    /** The world's up, against gravity: end-over-end turns are about axes square to it. */
+    private final Vec3 up;
     private double objectRadius;
     /** The observation the episode stopped at, waiting for the throw to be chosen; null when not waiting. */
     private Observation waiting;
@@ -86,6 +88,7 @@ public final class CatchThrowEpisode {
         this.periodSteps = controller.config().periodSteps();
         this.q = new double[model.dofCount()];
         this.qd = new double[model.dofCount()];
+        this.up = sim.config().gravity().negate().normalized();
     }
 
     /** Resets the world (arm at rest in the neutral pose), sets up the task's episode and launches {@code object}. */
@@ -253,7 +256,7 @@ public final class CatchThrowEpisode {
     /**
      * The throw's flight: from the first tick of the loop's throw without a hand contact (the
      * release) to the first contact after it (the catch), where the object is recorded; in
-     * between, how far its long axis turns.
+     * between, how far its long axis turns end over end ({@link #endOverEndTurn}).
      */
     private void trackFlight(Observation obs) {
         if (loops.isEmpty() || flight == Flight.LANDED) {
@@ -270,9 +273,26 @@ public final class CatchThrowEpisode {
             flight = Flight.LANDED;
             catchPoint = obs.object().position();
         } else if (axis != null) {
-            flightRotation += Math.acos(Math.max(-1, Math.min(1, lastAxis.dot(axis))));
+            flightRotation += endOverEndTurn(lastAxis, axis, up);
             lastAxis = axis;
         }
+    }
+
+    /**
+     * The end-over-end part of the long axis's turn from {@code from} to {@code to} (unit
+     * vectors): the angle between them, weighted by how horizontal the axis they turn about is.
+     * A can tossed end over end turns about a horizontal axis and counts fully; one spun flat
+     * like a propeller turns about the vertical and counts nothing (it never stands on its end).
+     */
+    static double endOverEndTurn(Vec3 from, Vec3 to, Vec3 up) {
+        Vec3 turnAxis = from.cross(to);
+        double sin = turnAxis.norm();
+        if (sin < 1e-12) {
+            return 0; // no turn, or exactly half a turn in one tick (no axis to tell)
+        }
+        double vertical = turnAxis.dot(up) / sin;
+        double angle = Math.atan2(sin, from.dot(to));
+        return angle * Math.sqrt(Math.max(0, 1 - vertical * vertical));
     }
 
     /** The controller's reaction to an observation; the loop record if the loop ran out of time. */

@@ -16,9 +16,10 @@ import handsim.math.Vec3;
  * @param boxHit the object touched a static box (the box task's target) during the loop
  * @param boxDistance least distance between the object and a static box during the loop (m;
  *     0 when it touched one, NaN when there is no box)
- * @param flightRotation how far the object's long axis turned while the object flew free of the
- *     hand, from the release of the throw to the first touch of the catch (rad, accumulated over
- *     the flight, so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
+ * @param flightRotation how far the object's long axis turned end over end (about horizontal
+ *     axes; a flat propeller spin does not count) while the object flew free of the hand, from
+ *     the release of the throw to the first touch of the catch (rad, accumulated over the flight,
+ *     so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
  * @param catchPoint where the object's centre was at the first touch of the catch after the
  *     throw's release (m, world; null for loop 0 and when nothing touched it again)
  * @param maxPenetration deepest hand-object penetration during the loop (m)

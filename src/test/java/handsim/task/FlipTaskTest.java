@@ -60,4 +60,31 @@ class FlipTaskTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TestSupport.tasks().create("flip", "sphere"));
         assertTrue(e.getMessage().contains("sphere") && e.getMessage().contains("can"), e.getMessage());
     }
+
+    @Test
+    void onlyEndOverEndTurningCounts() {
+        Vec3 up = Vec3.Y;
+        double step = Math.toRadians(10);
+        // a can lying along x tipped up about the horizontal z axis by 10 deg: all of it counts
+        Vec3 tipped = new Vec3(Math.cos(step), Math.sin(step), 0);
+        assertEquals(step, CatchThrowEpisode.endOverEndTurn(Vec3.X, tipped, up), 1e-12);
+        // the same turn flat, about the vertical (a propeller spin): nothing counts
+        Vec3 spun = new Vec3(Math.cos(step), 0, Math.sin(step));
+        assertEquals(0, CatchThrowEpisode.endOverEndTurn(Vec3.X, spun, up), 1e-12);
+        // about an axis 60 deg from the vertical: the turn times sin 60 deg (the horizontal part)
+        Vec3 n = new Vec3(0, Math.cos(Math.toRadians(60)), Math.sin(Math.toRadians(60)));
+        Vec3 between = handsim.math.Quat.fromAxisAngle(n, step).rotate(Vec3.X);
+        assertEquals(step * Math.sin(Math.toRadians(60)), CatchThrowEpisode.endOverEndTurn(Vec3.X, between, up), 1e-9);
+        // summed over a half turn end over end in 10 deg ticks: 180 deg, one can flip
+        double total = 0;
+        for (int k = 0; k < 18; k++) {
+            total += CatchThrowEpisode.endOverEndTurn(rotatedAboutZ(k * step), rotatedAboutZ((k + 1) * step), up);
+        }
+        assertEquals(Math.PI, total, 1e-9);
+        assertEquals(1, can.flips(flight(Math.toDegrees(total), true, target)));
+    }
+
+    private static Vec3 rotatedAboutZ(double angle) {
+        return new Vec3(Math.cos(angle), Math.sin(angle), 0);
+    }
 }
