@@ -142,6 +142,15 @@ public final class DdpgAgent {
 
     /** One DDPG update on a batch drawn from the replay buffer (Alg. 1, inner loop). */
     public Losses update() {
+        return update(true);
+    }
+
+    /**
+     * One update; with {@code updateActor} false only the critic (and its target) learns and
+     * the actor stays as it is: the critic warm-up that lets a pretrained actor's critic catch
+     * up before the actor follows its gradient.
+     */
+    public Losses update(boolean updateActor) {
         ReplayBuffer.Batch b = replay.sample(config.batchSize(), replayRng);
         int n = b.size();
         INDArray s = normalized(b.obs(), n);
@@ -154,6 +163,12 @@ public final class DdpgAgent {
         double criticLoss = err.mul(err).meanNumber().doubleValue();
         Networks.descend(critic, err.muli(2));
 
+        if (!updateActor) {
+            double actorLoss = -critic.output(Nd4j.hstack(s, actor.output(s, false)), false).meanNumber().doubleValue();
+            Networks.softUpdate(criticTarget, critic, config.tau());
+            updates++;
+            return new Losses(criticLoss, actorLoss);
+        }
         // actor: maximise Q(s, mu(s)), following dQ/da back through the actor (deterministic policy gradient)
         INDArray mu = Networks.forwardForBackprop(actor, s);
         INDArray qMu = Networks.forwardForBackprop(critic, Nd4j.hstack(s, mu));

@@ -238,8 +238,10 @@ public final class Trainer {
         if (steps < config.exploration().warmupSteps() || !agent.canUpdate()) {
             return;
         }
+        // critic warm-up: for its first decisions after the random warm-up only the critic learns
+        boolean updateActor = steps >= config.exploration().warmupSteps() + config.training().criticWarmupDecisions();
         for (int u = 0; u < config.training().updatesPerStep(); u++) {
-            DdpgAgent.Losses losses = agent.update();
+            DdpgAgent.Losses losses = agent.update(updateActor);
             criticLossSum += losses.critic();
             actorLossSum += losses.actor();
             lossCount++;

@@ -146,16 +146,20 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
      * @param parallelEpisodes 1: learn online, updating after every decision; K > 1: play K
      *     episodes at once with a frozen policy snapshot, then do their updates
      * @param checkpointEveryEpisodes save a checkpoint this often (0 = only at the end)
+     * @param criticWarmupDecisions decisions after the random warm-up during which only the critic
+     *     learns (optional, 0 when absent): a pretrained actor keeps its actions until the critic
+     *     has fitted their values, instead of following the gradient of an untrained critic
      */
     public record Training(int episodes, int updatesPerStep, int maxDecisionsPerEpisode, int movingAverageWindow,
-            int parallelEpisodes, int checkpointEveryEpisodes) {
+            int parallelEpisodes, int checkpointEveryEpisodes, int criticWarmupDecisions) {
 
         static Training parse(Json j) {
             j.allow("comment");
             Training t = new Training(j.integer("episodes", 0, Integer.MAX_VALUE), j.integer("updatesPerStep", 0, 1000),
                     j.integer("maxDecisionsPerEpisode", 1, Integer.MAX_VALUE),
                     j.integer("movingAverageWindow", 1, 1_000_000), j.integer("parallelEpisodes", 1, 4096),
-                    j.integer("checkpointEveryEpisodes", 0, Integer.MAX_VALUE));
+                    j.integer("checkpointEveryEpisodes", 0, Integer.MAX_VALUE),
+                    j.has("criticWarmupDecisions") ? j.integer("criticWarmupDecisions", 0, Integer.MAX_VALUE) : 0);
             j.requireNoUnknownFields();
             return t;
         }

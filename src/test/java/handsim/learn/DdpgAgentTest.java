@@ -72,6 +72,20 @@ class DdpgAgentTest {
     }
 
     @Test
+    void criticWarmupLeavesTheActorAsItIs() {
+        DdpgAgent agent = PolicyTest.trainedAgent(3, 1, 14);
+        double[] actor = Networks.rowMajor(agent.actor.params());
+        double[] actorTarget = Networks.rowMajor(agent.actorTarget.params());
+        double[] critic = Networks.rowMajor(agent.critic.params());
+        DdpgAgent.Losses losses = agent.update(false);
+        // exactly unchanged: no gradient step and no soft update touched the actor or its target
+        assertArrayEquals(actor, Networks.rowMajor(agent.actor.params()), 0.0);
+        assertArrayEquals(actorTarget, Networks.rowMajor(agent.actorTarget.params()), 0.0);
+        assertFalse(Arrays.equals(critic, Networks.rowMajor(agent.critic.params())), "the critic learned");
+        assertTrue(Double.isFinite(losses.actor()) && Double.isFinite(losses.critic()), "both losses still reported");
+    }
+
+    @Test
     void optionalL2AndClippingReachTheNetworks() {
         TrainingConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
                 "ddpg.actorHidden", "[32]").ddpg();
