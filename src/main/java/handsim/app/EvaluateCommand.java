@@ -25,6 +25,7 @@ import handsim.task.LoopRecord;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -266,10 +267,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), errors.count(), errors.mean(),
                 errors.absMean(), errors.absP95(), 100 * errors.within(0.1), out.get("max_limit_excess_deg").asDouble(),
                 out.get("max_penetration_mm").asDouble(), out.get("peak_torque_ratio").asDouble());
-        if (csv != null) {
-            Outputs.writeString(csv, rows.toString());
-            System.out.println("wrote " + csv);
-        }
+        writeCsv(rows);
         if (plot != null && errors.count() > 0) {
             errors.writeHistogram(plot, String.format(Locale.ROOT, "Height error, %s controller, %s (%d throws)", controller,
                     object, errors.count()), 0.01);
@@ -278,13 +276,16 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     private static String csvRow(long seed, LoopRecord r) {
-        return String.format(Locale.ROOT, "%d,%d,%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
-                Double.isNaN(r.apexHeight()) ? "" : String.format(Locale.ROOT, "%.4f", r.apexHeight()),
-                Double.isNaN(r.targetHeight()) ? "" : String.format(Locale.ROOT, "%.4f", r.targetHeight()),
-                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().x()),
-                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().y()),
-                r.landing() == null ? "" : String.format(Locale.ROOT, "%.4f", r.landing().z()),
-                r.maxPenetration() * 1e3, Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
+        return String.format(Locale.ROOT, "%d,%d,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
+                csvNumber(r.apexHeight()), csvNumber(r.targetHeight()), csvPoint(r.landing()), r.maxPenetration() * 1e3, Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
+    }
+
+    /** Writes the --csv file, if one was asked for. */
+    private void writeCsv(CharSequence rows) throws IOException {
+        if (csv != null) {
+            Outputs.writeString(csv, rows.toString());
+            System.out.println("wrote " + csv);
+        }
     }
 
     private static String csvNumber(double v) {
@@ -365,10 +366,7 @@ final class EvaluateCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "box task, %s controller, %s: %d of %d tests succeeded (%.1f %%); inner half of the region "
                 + "(within %.3f m of its centre): %.1f %% of %d%n", controller, object, successes, results.size(),
                 100 * BoxTests.successRate(results), 0.5 * radius, 100 * BoxTests.successRate(inner), inner.size());
-        if (csv != null) {
-            Outputs.writeString(csv, rows.toString());
-            System.out.println("wrote " + csv);
-        }
+        writeCsv(rows);
         if (plot != null) {
             BoxTests.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
                     "Box tests, %s controller (%d of %d succeeded)", controller, successes, results.size()));
@@ -410,8 +408,7 @@ final class EvaluateCommand implements Callable<Integer> {
                             loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
                 }
             }
-            Outputs.writeString(csv, rows.toString());
-            System.out.println("wrote " + csv);
+            writeCsv(rows);
         }
         double mean = runs.stream().mapToInt(FlipRun::inARow).average().orElse(0);
         out.put("episodes_run", runs.size());

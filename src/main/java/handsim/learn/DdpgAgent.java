@@ -163,21 +163,19 @@ public final class DdpgAgent {
         double criticLoss = err.mul(err).meanNumber().doubleValue();
         Networks.descend(critic, err.muli(2));
 
-        if (!updateActor) {
-            double actorLoss = -critic.output(Nd4j.hstack(s, actor.output(s, false)), false).meanNumber().doubleValue();
-            Networks.softUpdate(criticTarget, critic, config.tau());
-            updates++;
-            return new Losses(criticLoss, actorLoss);
+        double actorLoss;
+        if (updateActor) {
+            // actor: maximise Q(s, mu(s)), following dQ/da back through the actor (deterministic policy gradient)
+            INDArray mu = Networks.forwardForBackprop(actor, s);
+            INDArray qMu = Networks.forwardForBackprop(critic, Nd4j.hstack(s, mu));
+            actorLoss = -qMu.meanNumber().doubleValue();
+            INDArray dLossDInput = Networks.inputGradient(critic, Nd4j.ones(qMu.dataType(), n, 1).negi());
+            INDArray dLossDAction = dLossDInput.get(NDArrayIndex.all(), NDArrayIndex.interval(obsSize, obsSize + actionSize)).dup();
+            Networks.descend(actor, dLossDAction);
+            Networks.softUpdate(actorTarget, actor, config.tau());
+        } else {
+            actorLoss = -critic.output(Nd4j.hstack(s, actor.output(s, false)), false).meanNumber().doubleValue();
         }
-        // actor: maximise Q(s, mu(s)), following dQ/da back through the actor (deterministic policy gradient)
-        INDArray mu = Networks.forwardForBackprop(actor, s);
-        INDArray qMu = Networks.forwardForBackprop(critic, Nd4j.hstack(s, mu));
-        double actorLoss = -qMu.meanNumber().doubleValue();
-        INDArray dLossDInput = Networks.inputGradient(critic, Nd4j.ones(qMu.dataType(), n, 1).negi());
-        INDArray dLossDAction = dLossDInput.get(NDArrayIndex.all(), NDArrayIndex.interval(obsSize, obsSize + actionSize)).dup();
-        Networks.descend(actor, dLossDAction);
-
-        Networks.softUpdate(actorTarget, actor, config.tau());
         Networks.softUpdate(criticTarget, critic, config.tau());
         updates++;
         return new Losses(criticLoss, actorLoss);
