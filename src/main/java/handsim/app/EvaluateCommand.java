@@ -429,7 +429,7 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("throws", r.throwsMade());
             o.put("dropped", r.dropped());
         }
-        System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.1f "
+        System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
                 + "(min %d, max %d); %d flips in %d throws; %d drops%n", controller, object, runs.size(), mean,
                 out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), out.get("flips").asInt(),
                 out.get("throws").asInt(), out.get("drops").asInt());
@@ -439,7 +439,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 x[i] = runs.get(i).seed();
                 y[i] = runs.get(i).inARow();
             }
-            new handsim.report.Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.1f)",
+            new handsim.report.Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
                     controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, handsim.report.Plot.BLUE,
                     handsim.report.Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);

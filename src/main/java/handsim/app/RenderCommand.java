@@ -30,7 +30,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Write a headless run as PNG frames DIR/00000.png, 00001.png, ... (make a video with "
-                + "ffmpeg -framerate F -i DIR/%05d.png out.mp4). Needs an X display; the launcher uses xvfb-run without one.")
+                + "ffmpeg -framerate F -i DIR/%%05d.png out.mp4). Needs an X display; the launcher uses xvfb-run without one.")
 final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--out", paramLabel = "DIR", required = true, description = "folder for the frames")
