@@ -142,12 +142,20 @@ public final class Plot {
         g.rotate(-Math.PI / 2);
         g.drawString(yLabel, -(TOP + ph / 2) - fm.stringWidth(yLabel) / 2, 20);
         g.setTransform(rot);
+        // the legend, as wide as its longest label, on a white box over the top-right corner of the data
+        int labelWidth = 0;
+        for (Series s : series) {
+            labelWidth = Math.max(labelWidth, fm.stringWidth(s.label));
+        }
+        int lx = LEFT + pw - labelWidth - 40;
+        g.setColor(new Color(255, 255, 255, 220));
+        g.fillRect(lx - 6, TOP + 4, labelWidth + 42, 20 * series.size() + 6);
         int ly = TOP + 20;
         for (Series s : series) {
             g.setColor(s.color);
-            g.fillRect(LEFT + pw - 190, ly - 9, 18, 8);
+            g.fillRect(lx, ly - 9, 18, 8);
             g.setColor(Color.BLACK);
-            g.drawString(s.label, LEFT + pw - 165, ly);
+            g.drawString(s.label, lx + 25, ly);
             ly += 20;
         }
         g.dispose();

@@ -97,4 +97,11 @@ class CommandsTest {
         assertTrue(Files.size(dir.resolve("c.png")) > 1000, "the chart is written");
         assertEquals(2, Main.run("curves", dir.toString(), "--out", dir.resolve("d.png").toString()), "a folder without metrics.csv");
     }
+
+    @Test
+    void curvesLegendDropsOnlyTheRunFoldersStartTime() {
+        // run folders are named task__name__seed__yyyyMMdd-HHmmss (TrainRun); the time makes labels too long to read
+        assertEquals("flip__flip-warm__2", CurvesCommand.legendLabel(Path.of("runs/flip__flip-warm__2__20261123-173740")));
+        assertEquals("cold", CurvesCommand.legendLabel(Path.of("cold")), "a folder named otherwise keeps its name");
+    }
 }
