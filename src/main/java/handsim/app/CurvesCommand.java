@@ -59,7 +59,7 @@ final class CurvesCommand implements Callable<Integer> {
             List<EpisodeStats> s = all.get(i);
             double[] x = s.stream().mapToDouble(EpisodeStats::episode).toArray();
             double[] y = s.stream().mapToDouble(EpisodeStats::averageReward).toArray();
-            plot.add(legendLabel(runs.get(i)), x, y, COLORS[i % COLORS.length], Plot.Style.LINE);
+            plot.add(RunFolders.withoutStartTime(runs.get(i)), x, y, COLORS[i % COLORS.length], Plot.Style.LINE);
             long reached = LearningCurves.firstEpisodeReaching(s, target);
             System.out.printf(Locale.ROOT, "%s: %d episodes, final average %.3f; reaches %.3f %s%n", runs.get(i).getFileName(),
                     s.size(), y[y.length - 1], target, reached < 0 ? "never" : "at episode " + reached);
@@ -67,10 +67,5 @@ final class CurvesCommand implements Callable<Integer> {
         plot.writePng(out);
         System.out.println("wrote " + out);
         return 0;
-    }
-
-    /** A run folder's name without its start time (task__name__seed__yyyyMMdd-HHmmss -> task__name__seed). */
-    static String legendLabel(Path run) {
-        return run.getFileName().toString().replaceFirst("__\\d{8}-\\d{6}$", "");
     }
 }

@@ -15,8 +15,6 @@ import java.nio.file.Files;
 import handsim.task.LoopRecord;
 import handsim.task.SceneSetup;
 import java.nio.file.Path;
-import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -86,8 +84,7 @@ final class DemoCommand implements Callable<Integer> {
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
                 ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
-        Path dir = out != null ? out : Home.resolve("runs/demo__" + object + "__" + seed + "__"
-                + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        Path dir = out != null ? out : RunFolders.next(null, "demo", object, seed);
 
         List<LoopRecord> throwsMade = new ArrayList<>();
         List<Long> throwSeeds = new ArrayList<>();

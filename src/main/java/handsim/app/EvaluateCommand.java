@@ -277,7 +277,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     private static String csvRow(long seed, LoopRecord r) {
         return String.format(Locale.ROOT, "%d,%d,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f%n", seed, r.index(), r.caught(),
-                csvNumber(r.apexHeight()), csvNumber(r.targetHeight()), csvPoint(r.landing()), r.maxPenetration() * 1e3, Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
+                csvNumber(r.apexHeight()), csvNumber(r.targetHeight()), csvPoint(r.landing()), r.maxPenetration() * 1e3,
+                Math.toDegrees(r.maxLimitExcess()), r.peakTorqueRatio(), r.duration());
     }
 
     /** Writes the --csv file, if one was asked for. */

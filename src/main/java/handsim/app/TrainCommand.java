@@ -1,7 +1,6 @@
 package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
@@ -18,7 +17,6 @@ import handsim.train.TrainRun;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -110,9 +108,7 @@ final class TrainCommand implements Callable<Integer> {
     }
 
     private Path runFolder(TrainConfig c) {
-        String time = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
-        Path base = runs != null ? runs : Home.resolve("runs");
-        return base.resolve(c.run().task() + "__" + c.run().name() + "__" + c.learner().seed() + "__" + time);
+        return RunFolders.next(runs, c.run().task(), c.run().name(), c.learner().seed());
     }
 
     /** What a run folder records about how the run was made. */

@@ -2,7 +2,6 @@ package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
 import handsim.learn.ActorPretraining;
@@ -16,7 +15,6 @@ import handsim.train.Warmstart;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -48,9 +46,7 @@ final class WarmstartCommand implements Callable<Integer> {
         ThrowEnvs envs = TrainCommand.environments(c.train().run(), model);
         Tasks tasks = Runtime.tasks();
         double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
-        String time = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
-        Path dir = (runs != null ? runs : Home.resolve("runs")).resolve("warmstart__" + c.train().run().name() + "__"
-                + c.train().learner().seed() + "__" + time);
+        Path dir = RunFolders.next(runs, "warmstart", c.train().run().name(), c.train().learner().seed());
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
         ObjectNode run = Json.mapper().createObjectNode();

@@ -100,8 +100,8 @@ class CommandsTest {
 
     @Test
     void curvesLegendDropsOnlyTheRunFoldersStartTime() {
-        // run folders are named task__name__seed__yyyyMMdd-HHmmss (TrainRun); the time makes labels too long to read
-        assertEquals("flip__flip-warm__2", CurvesCommand.legendLabel(Path.of("runs/flip__flip-warm__2__20261123-173740")));
-        assertEquals("cold", CurvesCommand.legendLabel(Path.of("cold")), "a folder named otherwise keeps its name");
+        // run folders are named task__name__seed__yyyyMMdd-HHmmss (RunFolders.next); the time makes legend labels too long to read
+        assertEquals("flip__flip-warm__2", RunFolders.withoutStartTime(Path.of("runs/flip__flip-warm__2__20261123-173740")));
+        assertEquals("cold", RunFolders.withoutStartTime(Path.of("cold")), "a folder named otherwise keeps its name");
     }
 }
