@@ -34,9 +34,6 @@ public final class CatchThrowEpisode {
     /** How the episode stands after a tick. */
     public enum Status { RUNNING, DROPPED, TIME_LIMIT }
 
-    /** Where the object of the current loop is, relative to the throw's flight. */
-    private enum Flight { BEFORE_RELEASE, FLYING, LANDED }
-
     private final Simulator sim;
     private final ServoLoop loop;
     private final NominalController controller;
@@ -55,8 +52,7 @@ public final class CatchThrowEpisode {
     private long touchedSinceTick;
     private List<WorldSnapshot.StaticBox> boxes = List.of();
     private Vec3 longAxis;
-    /** The world's up, against gravity: end-over-end turns are about axes square to it. */
-    private final Vec3 up;
+    private final FlightTracker flight;
     private double objectRadius;
     /** The observation the episode stopped at, waiting for the throw to be chosen; null when not waiting. */
     private Observation waiting;
@@ -67,10 +63,6 @@ public final class CatchThrowEpisode {
     private double maxLimitExcess;
     private boolean boxHit;
     private double boxDistance;
-    private Flight flight;
-    private Vec3 lastAxis;
-    private double flightRotation;
-    private Vec3 catchPoint;
     private Vec3 landing;
     private ThrowParameters loopThrow;
     private double loopGoal = Double.NaN;
@@ -88,7 +80,7 @@ public final class CatchThrowEpisode {
         this.periodSteps = controller.config().periodSteps();
         this.q = new double[model.dofCount()];
         this.qd = new double[model.dofCount()];
-        this.up = sim.config().gravity().negate().normalized();
+        this.flight = new FlightTracker(sim.config().gravity().negate());
     }
 
     /** Resets the world (arm at rest in the neutral pose), sets up the task's episode and launches {@code object}. */
@@ -253,46 +245,14 @@ public final class CatchThrowEpisode {
         return obs;
     }
 
-    /**
-     * The throw's flight: from the first tick of the loop's throw without a hand contact (the
-     * release) to the first contact after it (the catch), where the object is recorded; in
-     * between, how far its long axis turns end over end ({@link #endOverEndTurn}).
-     */
+    /** Follows the loop's throw in flight, from the release to the catch (see {@link FlightTracker}). */
     private void trackFlight(Observation obs) {
-        if (loops.isEmpty() || flight == Flight.LANDED) {
+        if (loops.isEmpty()) {
             return;
         }
-        boolean touching = obs.handTouchedObject();
-        Vec3 axis = longAxis == null ? null : obs.object().orientation().rotate(longAxis);
-        if (flight == Flight.BEFORE_RELEASE) {
-            if (!touching && state.phase() != Phase.MIDDLE) {
-                flight = Flight.FLYING;
-                lastAxis = axis;
-            }
-        } else if (touching) {
-            flight = Flight.LANDED;
-            catchPoint = obs.object().position();
-        } else if (axis != null) {
-            flightRotation += endOverEndTurn(lastAxis, axis, up);
-            lastAxis = axis;
-        }
-    }
-
-    /**
-     * The end-over-end part of the long axis's turn from {@code from} to {@code to} (unit
-     * vectors): the angle between them, weighted by how horizontal the axis they turn about is.
-     * A can tossed end over end turns about a horizontal axis and counts fully; one spun flat
-     * like a propeller turns about the vertical and counts nothing (it never stands on its end).
-     */
-    static double endOverEndTurn(Vec3 from, Vec3 to, Vec3 up) {
-        Vec3 turnAxis = from.cross(to);
-        double sin = turnAxis.norm();
-        if (sin < 1e-12) {
-            return 0; // no turn, or exactly half a turn in one tick (no axis to tell)
-        }
-        double vertical = turnAxis.dot(up) / sin;
-        double angle = Math.atan2(sin, from.dot(to));
-        return angle * Math.sqrt(Math.max(0, 1 - vertical * vertical));
+        RigidState o = obs.object();
+        flight.observe(obs.handTouchedObject(), state.phase() != Phase.MIDDLE, o.position(), o.velocity(),
+                longAxis == null ? null : o.orientation().rotate(longAxis));
     }
 
     /** The controller's reaction to an observation; the loop record if the loop ran out of time. */
@@ -333,9 +293,7 @@ public final class CatchThrowEpisode {
         maxLimitExcess = 0;
         boxHit = false;
         boxDistance = Double.POSITIVE_INFINITY;
-        flight = Flight.BEFORE_RELEASE;
-        flightRotation = 0;
-        catchPoint = null;
+        flight.reset();
         landing = null;
         loopThrow = loops.isEmpty() ? null : state.currentThrow();
         loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
@@ -352,7 +310,7 @@ public final class CatchThrowEpisode {
         }
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
                 loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
-                index == 0 || longAxis == null ? Double.NaN : flightRotation, catchPoint,
+                index == 0 || longAxis == null ? Double.NaN : flight.rotation(), flight.catchPoint(),
                 maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;

@@ -67,21 +67,50 @@ class FlipTaskTest {
         double step = Math.toRadians(10);
         // a can lying along x tipped up about the horizontal z axis by 10 deg: all of it counts
         Vec3 tipped = new Vec3(Math.cos(step), Math.sin(step), 0);
-        assertEquals(step, CatchThrowEpisode.endOverEndTurn(Vec3.X, tipped, up), 1e-12);
+        assertEquals(step, FlightTracker.endOverEndTurn(Vec3.X, tipped, up), 1e-12);
         // the same turn flat, about the vertical (a propeller spin): nothing counts
         Vec3 spun = new Vec3(Math.cos(step), 0, Math.sin(step));
-        assertEquals(0, CatchThrowEpisode.endOverEndTurn(Vec3.X, spun, up), 1e-12);
+        assertEquals(0, FlightTracker.endOverEndTurn(Vec3.X, spun, up), 1e-12);
         // about an axis 60 deg from the vertical: the turn times sin 60 deg (the horizontal part)
         Vec3 n = new Vec3(0, Math.cos(Math.toRadians(60)), Math.sin(Math.toRadians(60)));
         Vec3 between = handsim.math.Quat.fromAxisAngle(n, step).rotate(Vec3.X);
-        assertEquals(step * Math.sin(Math.toRadians(60)), CatchThrowEpisode.endOverEndTurn(Vec3.X, between, up), 1e-9);
+        assertEquals(step * Math.sin(Math.toRadians(60)), FlightTracker.endOverEndTurn(Vec3.X, between, up), 1e-9);
         // summed over a half turn end over end in 10 deg ticks: 180 deg, one can flip
         double total = 0;
         for (int k = 0; k < 18; k++) {
-            total += CatchThrowEpisode.endOverEndTurn(rotatedAboutZ(k * step), rotatedAboutZ((k + 1) * step), up);
+            total += FlightTracker.endOverEndTurn(rotatedAboutZ(k * step), rotatedAboutZ((k + 1) * step), up);
         }
         assertEquals(Math.PI, total, 1e-9);
         assertEquals(1, can.flips(flight(Math.toDegrees(total), true, target)));
+    }
+
+    @Test
+    void theFlightRunsFromTheLastTouchOnTheWayUpToTheFirstOnTheWayDown() {
+        FlightTracker f = new FlightTracker(Vec3.Y);
+        Vec3 rising = new Vec3(0, 2, 0), falling = new Vec3(0, -2, 0), p = Vec3.ZERO;
+        double step = Math.toRadians(10);
+        f.reset();
+        f.observe(true, false, p, rising, rotatedAboutZ(0)); // held, throw not begun
+        f.observe(false, false, p, rising, rotatedAboutZ(0)); // no contact for a tick before the throw: no release
+        assertEquals(0, f.rotation(), 0);
+        // released, turns 30 deg, then the rising hand meets it again: that turn was part of the throw
+        for (int k = 0; k <= 3; k++) {
+            f.observe(false, true, p, rising, rotatedAboutZ(k * step));
+        }
+        assertEquals(3 * step, f.rotation(), 1e-9);
+        f.observe(true, true, p, rising, rotatedAboutZ(3 * step));
+        assertEquals(null, f.catchPoint(), "a touch on the way up is no catch");
+        // released again: 18 ticks of 10 deg (a half turn), over the apex, caught on the way down
+        for (int k = 3; k <= 21; k++) {
+            f.observe(false, true, p, k < 12 ? rising : falling, rotatedAboutZ(k * step));
+        }
+        Vec3 caughtAt = new Vec3(0, 0.8, 0.3);
+        f.observe(true, true, caughtAt, falling, rotatedAboutZ(21 * step));
+        assertEquals(Math.PI, f.rotation(), 1e-9, "only the turn since the last release counts");
+        assertEquals(caughtAt, f.catchPoint());
+        // after the catch nothing more is counted
+        f.observe(false, true, p, falling, rotatedAboutZ(30 * step));
+        assertEquals(Math.PI, f.rotation(), 1e-9);
     }
 
     private static Vec3 rotatedAboutZ(double angle) {

@@ -1,0 +1,97 @@
+package handsim.task;
+
+import handsim.math.Vec3;
+
+/**
+ * One throw's flight, followed tick by tick: from the release (the last tick with a hand
+ * contact while the object still rises) to the catch (the first contact once it comes down),
+ * and how far the object's long axis turned end over end in between ({@link #endOverEndTurn}).
+ * A touch on the way up, when the still-rising hand meets the object again, is part of the
+ * throw: the flight begins after it. Engine-free, so the flip criterion is tested on scripted
+ * flights.
+ */
+final class FlightTracker {
+
+    private enum Stage { BEFORE_RELEASE, FLYING, LANDED }
+
+    /** The world's up, against gravity: end-over-end turns are about axes square to it. */
+    private final Vec3 up;
+    private Stage stage = Stage.BEFORE_RELEASE;
+    private Vec3 lastAxis;
+    private double rotation;
+    private Vec3 catchPoint;
+
+    FlightTracker(Vec3 up) {
+        this.up = up.normalized();
+    }
+
+    /** Starts following a new throw, not yet released. */
+    void reset() {
+        stage = Stage.BEFORE_RELEASE;
+        lastAxis = null;
+        rotation = 0;
+        catchPoint = null;
+    }
+
+    /**
+     * One tick of the throw.
+     *
+     * @param touching the hand touched the object since the previous tick
+     * @param throwBegun the controller has begun the throw (a loss of contact before it is no release)
+     * @param axis the object's long axis (world), or null for an object without one
+     */
+    void observe(boolean touching, boolean throwBegun, Vec3 position, Vec3 velocity, Vec3 axis) {
+        switch (stage) {
+            case BEFORE_RELEASE -> {
+                if (!touching && throwBegun) {
+                    stage = Stage.FLYING;
+                    rotation = 0;
+                    lastAxis = axis;
+                }
+            }
+            case FLYING -> {
+                if (touching) {
+                    if (velocity.dot(up) > 0) {
+                        stage = Stage.BEFORE_RELEASE; // touched on the way up: still the throw
+                    } else {
+                        stage = Stage.LANDED;
+                        catchPoint = position;
+                    }
+                } else if (axis != null) {
+                    rotation += endOverEndTurn(lastAxis, axis, up);
+                    lastAxis = axis;
+                }
+            }
+            case LANDED -> {
+                // the catch is recorded; nothing more to follow
+            }
+        }
+    }
+
+    /** The end-over-end turn of the long axis in flight so far (rad; 0 before the release). */
+    double rotation() {
+        return rotation;
+    }
+
+    /** Where the object's centre was at the catch (null before it). */
+    Vec3 catchPoint() {
+        return catchPoint;
+    }
+
+    /**
+     * The end-over-end part of the long axis's turn from {@code from} to {@code to} (unit
+     * vectors): the angle between them, weighted by how horizontal the axis they turn about is.
+     * A can tossed end over end turns about a horizontal axis and counts fully; one spun flat
+     * like a propeller turns about the vertical and counts nothing (it never stands on its end).
+     */
+    static double endOverEndTurn(Vec3 from, Vec3 to, Vec3 up) {
+        Vec3 turnAxis = from.cross(to);
+        double sin = turnAxis.norm();
+        if (sin < 1e-12) {
+            return 0; // no turn, or exactly half a turn in one tick (no axis to tell)
+        }
+        double vertical = turnAxis.dot(up) / sin;
+        double angle = Math.atan2(sin, from.dot(to));
+        return angle * Math.sqrt(Math.max(0, 1 - vertical * vertical));
+    }
+}
