@@ -12,8 +12,8 @@ import java.util.Optional;
  * crosses the horizontal interception plane while descending, and meet it there with the palm
  * moving at a fraction (70 %) of its velocity. The back of the hand faces along the object's
  * velocity; for a can or club the hand's z axis lies along the object's long axis. The paper
- * asks for both; where they conflict the long axis wins: the back of the hand faces the part
- * of the velocity across the axis, so the object lands flat on the palm instead of on one end.
+ * asks for both; where they conflict the palm tilts toward lying flat under the axis, fully for
+ * an object arriving level, not at all for one falling straight down ({@link #tiltLimit}).
  *
  * <p>The arm cannot turn the palm to every heading about its normal (wrist and shoulder limits),
  * so the planner asks a {@link Reach} whether the arm can place the palm there and, if not,
@@ -56,14 +56,20 @@ public final class CatchPlanner {
     private final double velocityFraction;
     private final double minDuration;
     private final HeadingSearch search;
+    private final double fallingTilt;
 
+    /**
+     * @param fallingTilt how far the palm may tilt from facing a vertically falling long object
+     *     to lie flat under its axis (rad; see {@link #tiltLimit})
+     */
     public CatchPlanner(Ballistics ballistics, double planeHeight, double velocityFraction, double minDuration,
-            HeadingSearch search) {
+            HeadingSearch search, double fallingTilt) {
         this.ballistics = ballistics;
         this.planeHeight = planeHeight;
         this.velocityFraction = velocityFraction;
         this.minDuration = minDuration;
         this.search = search;
+        this.fallingTilt = fallingTilt;
     }
 
     /**
@@ -80,7 +86,7 @@ public final class CatchPlanner {
         Vec3 p = ballistics.position(object.position(), object.velocity(), t);
         Vec3 v = ballistics.velocity(object.velocity(), t);
         Optional<Vec3> axis = longAxisAt(object, spec, t);
-        Vec3 back = backOfHand(v, axis);
+        Vec3 back = backOfHand(v, axis, fallingTilt);
         Quat preferred = handRotation(back, axis, readyRotation);
         Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()), axis.isPresent(), reach);
         return new Plan(t, palm, v.times(velocityFraction), p, v);
@@ -119,18 +125,34 @@ public final class CatchPlanner {
 
     /**
      * The direction the back of the hand faces: along the incoming velocity, or, for an object
-     * with a long axis, along the velocity's part across that axis (unless the object flies
-     * nearly end-first, where the velocity itself is kept).
+     * with a long axis, turned from it toward the velocity's part across that axis (so the
+     * object lands flat on the palm instead of on one end) by at most {@link #tiltLimit}
+     * (unless the object flies nearly end-first, where the velocity itself is kept).
      */
-    static Vec3 backOfHand(Vec3 velocity, Optional<Vec3> longAxis) {
+    static Vec3 backOfHand(Vec3 velocity, Optional<Vec3> longAxis, double fallingTilt) {
         Vec3 back = velocity.norm() > 1e-6 ? velocity.normalized() : Vec3.Y.negate();
         if (longAxis.isPresent()) {
             Vec3 across = perpendicularPart(back, longAxis.get());
             if (across.norm() > MIN_ACROSS) {
-                return across.normalized();
+                Vec3 flat = across.normalized();
+                double tilt = Math.acos(Math.max(-1, Math.min(1, back.dot(flat))));
+                double limit = tiltLimit(back, fallingTilt);
+                return tilt <= limit ? flat : Quat.fromAxisAngle(back.cross(flat).normalized(), limit).rotate(back);
             }
         }
         return back;
+    }
+
+    /**
+     * How far the back of the hand may turn away from the arrival direction {@code back} (unit)
+     * to lie flat under the long axis: {@code fallingTilt} for an object falling straight down,
+     * growing linearly with the arrival's horizontal part to a quarter turn for one arriving
+     * level. A tumbling object coming down onto a level palm settles on it; a tilted palm lets it
+     * slide off (measured, README); an object arriving from the side is met flat.
+     */
+    static double tiltLimit(Vec3 back, double fallingTilt) {
+        double horizontal = Math.sqrt(back.x() * back.x() + back.z() * back.z());
+        return fallingTilt + (Math.PI / 2 - fallingTilt) * Math.min(1, horizontal);
     }
 
     /** The object's long axis (world) after {@code t} seconds of free rotation at constant angular velocity. */

@@ -27,13 +27,15 @@ import java.nio.file.Path;
  * @param replanSpeedChange during CATCH, before any contact, the catch is planned again when the
  *     object's velocity differs from the ballistic prediction by more than this (m/s): it
  *     bounced off something
+ * @param fallingTilt how far the palm may tilt from facing a long object that falls straight
+ *     down, to lie flat under its axis (rad); more for objects arriving from the side
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
         double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
         double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
         Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations,
-        double replanSpeedChange) {
+        double replanSpeedChange, double fallingTilt) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -44,7 +46,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         Json fsm = j.get("fsm");
         fsm.allow("comment");
         Json catching = j.get("catch");
-        catching.allow("comment", "headingComment", "replanComment");
+        catching.allow("comment", "headingComment", "replanComment", "fallingTiltComment");
         Json poses = j.get("handPoses");
         poses.allow("comment");
         Json throwing = j.get("throw");
@@ -72,7 +74,8 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                         catching.positive("reachPositionTolerance"),
                         Math.toRadians(catching.positive("reachRotationToleranceDeg"))),
                 catching.integer("reachIkIterations", 1, 10000),
-                catching.positive("replanSpeedChange"));
+                catching.positive("replanSpeedChange"),
+                Math.toRadians(catching.number("fallingTiltDeg", 0, 90)));
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }

@@ -54,7 +54,7 @@ public final class NominalController {
         }
         this.ballistics = new Ballistics(gravity);
         this.planner = new CatchPlanner(ballistics, config.interceptionHeight(),
-                config.catchVelocityFraction(), config.catchMinDuration(), config.headingSearch());
+                config.catchVelocityFraction(), config.catchMinDuration(), config.headingSearch(), config.fallingTilt());
         this.neutralPose = model.poseVector("neutral");
         this.neutralPalm = kin.siteFrame(palm, neutralPose);
     }

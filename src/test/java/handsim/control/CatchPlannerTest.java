@@ -20,7 +20,7 @@ class CatchPlannerTest {
     static final double TOLERANCE = 1e-9;
 
     private final CatchPlanner planner = new CatchPlanner(new Ballistics(GRAVITY), PLANE, 0.7, 0.12,
-            new CatchPlanner.HeadingSearch(Math.toRadians(15), Math.toRadians(90), 0.005, Math.toRadians(2)));
+            new CatchPlanner.HeadingSearch(Math.toRadians(15), Math.toRadians(90), 0.005, Math.toRadians(2)), 0);
     /** An arm that reaches everywhere: the planner keeps its preferred heading. */
     private static final CatchPlanner.Reach ANYWHERE = palm -> new DlsIk.Residual(0, 0);
     private final Quat ready = Quat.fromAxisAngle(Vec3.X, -Math.PI / 2);
@@ -59,9 +59,11 @@ class CatchPlannerTest {
     }
 
     @Test
-    void canLongAxisLiesAlongTheHandsZAxisAndFlatOnThePalm() {
-        // sec. 3.6: for a can the hand's z axis is aligned with the can's long axis; the back of
-        // the hand faces the incoming velocity as far as that allows (its part across the axis)
+    void canLongAxisLiesAlongTheHandsZAxisAndThePalmTiltsTowardItAsFarAsItsArrivalAllows() {
+        // sec. 3.6: for a can the hand's z axis is aligned with the can's long axis (as far as it
+        // is square to the back of the hand); the back of the hand faces the incoming velocity,
+        // turned toward the velocity's part across the axis by at most the tilt limit (shipped
+        // fallingTiltDeg 0: 90 deg times the arrival's horizontal part)
         ObjectSpec can = TestSupport.object("can");
         Vec3 p0 = new Vec3(0.05, 1.1, 1.2);
         Vec3 v0 = new Vec3(0, 1.0, -1.5);
@@ -69,10 +71,29 @@ class CatchPlannerTest {
         CatchPlanner.Plan plan = planner.plan(new RigidState(p0, tilt, v0, Vec3.ZERO), can, centred, ready, ANYWHERE);
         Vec3 axis = tilt.rotate(can.longAxis().orElseThrow());
         Quat r = plan.palmTarget().rotation();
-        assertEquals(1.0, Math.abs(r.zAxis().dot(axis)), 1e-9, "hand z along the long axis");
-        Vec3 v = plan.objectVelocity();
+        Vec3 v = plan.objectVelocity().normalized();
         Vec3 across = v.minus(axis.times(v.dot(axis))).normalized();
-        assertVec(across, r.yAxis(), "back of the hand along the velocity across the axis");
+        double horizontal = Math.hypot(v.x(), v.z());
+        double expectedTilt = Math.min(Math.acos(v.dot(across)), Math.PI / 2 * horizontal);
+        Vec3 back = r.yAxis();
+        assertEquals(expectedTilt, Math.acos(Math.min(1, back.dot(v))), 1e-9, "tilt of the back away from the velocity");
+        assertEquals(0, back.dot(v.cross(across)), 1e-9, "tilted toward the part across the axis");
+        Vec3 axisOffBack = axis.minus(back.times(axis.dot(back))).normalized();
+        assertEquals(1.0, Math.abs(r.zAxis().dot(axisOffBack)), 1e-9, "hand z along the long axis");
+    }
+
+    @Test
+    void aTiltedCanFallingStraightDownIsMetWithALevelPalm() {
+        // falling vertically, the can comes down onto a level palm (shipped fallingTiltDeg 0),
+        // with the hand's z axis along the long axis's horizontal part
+        ObjectSpec can = TestSupport.object("can");
+        Quat tilt = Quat.fromAxisAngle(Vec3.Z, Math.toRadians(40));
+        RigidState falling = new RigidState(new Vec3(0.05, 1.3, 0.35), tilt, new Vec3(0, -1, 0), Vec3.ZERO);
+        Quat r = planner.plan(falling, can, centred, ready, ANYWHERE).palmTarget().rotation();
+        assertVec(new Vec3(0, -1, 0), r.yAxis(), "back of the hand down: the palm level");
+        Vec3 axis = tilt.rotate(can.longAxis().orElseThrow());
+        Vec3 level = new Vec3(axis.x(), 0, axis.z()).normalized();
+        assertEquals(1.0, Math.abs(r.zAxis().dot(level)), 1e-9, "hand z along the axis's horizontal part");
     }
 
     @Test
