@@ -11,7 +11,8 @@ import java.util.Map;
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from how far
  * the object's long axis turned end over end in flight ({@link LoopRecord#flightRotation},
- * accumulated from the release to the first touch of the catch; turning about the vertical, a
+ * accumulated from the release, the last hand contact on the way up, to the catch, the first
+ * contact on the way down, by {@link FlightTracker}; turning about the vertical, a
  * flat spin, does not count): {@code flips = floor((rotation + tolerance) /
  * flipAngle)}, with flipAngle half a turn for a can (end for end is the same can) and a whole
  * turn for a club (the handle comes back to the hand). Reward eq. (7) as read in SPEC.md: a
