@@ -147,8 +147,9 @@ public final class CatchPlanner {
      * How far the back of the hand may turn away from the arrival direction {@code back} (unit;
      * y is up, as in {@link Ballistics}) to lie flat under the long axis: {@code fallingTilt}
      * for an object falling straight down, growing linearly with the arrival's horizontal part
-     * to a quarter turn for one arriving level. A tumbling object coming down onto a level palm settles on it; a tilted palm lets it
-     * slide off (measured, README); an object arriving from the side is met flat.
+     * to a quarter turn for one arriving level. A tumbling object coming down onto a level palm
+     * settles on it, a tilted palm lets it slide off (measured, README); an object arriving from
+     * the side is met flat.
      */
     static double tiltLimit(Vec3 back, double fallingTilt) {
         double horizontal = Math.sqrt(back.x() * back.x() + back.z() * back.z());
