@@ -69,7 +69,14 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (configs/objects)")
     String object;
 
-    @Option(names = "--loops", defaultValue = "10", description = "height: throws to attempt per episode after the first catch")
+    /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of 50 (issue 7). */
+    static final int FLIP_DEFAULT_LOOPS = 100;
+
+    @Option(names = "--loops", description = "height: throws to attempt per episode after the first catch (default 10); "
+            + "flip: the most flip-and-catch loops an episode runs to (default " + FLIP_DEFAULT_LOOPS + ")")
+    Integer loopsOption;
+
+    /** --loops, or the task's default. */
     int loops;
 
     @Option(names = "--episodes", defaultValue = "1", description = "height: episodes, seeded --seed, --seed+1, ...")
@@ -148,6 +155,7 @@ final class EvaluateCommand implements Callable<Integer> {
         if (policy != null && !controller.equals("learned")) {
             throw new IllegalArgumentException("--policy goes with --controller learned");
         }
+        loops = loopsOption != null ? loopsOption : task.equals("flip") ? FLIP_DEFAULT_LOOPS : 10;
         if (loops < 0 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
         }
@@ -431,8 +439,8 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("dropped", r.dropped());
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
-                + "(min %d, max %d); %d flips in %d throws; %d drops%n", controller, object, runs.size(), mean,
-                out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), out.get("flips").asInt(),
+                + "(min %d, max %d, at most %d); %d flips in %d throws; %d drops%n", controller, object, runs.size(), mean,
+                out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(),
                 out.get("throws").asInt(), out.get("drops").asInt());
         if (plot != null) {
             double[] x = new double[runs.size()], y = new double[runs.size()];

@@ -47,6 +47,28 @@ class CommandsTest {
     }
 
     @Test
+    void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
+        PrintStream stdout = System.out;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+            code = Main.run("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
+                    "--workers", "1", "--json", dir.resolve("flip.json").toString());
+        } finally {
+            System.setOut(stdout);
+        }
+        String text = printed.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, text);
+        // issue 7's goal is a mean of 50 loops in a row: the height task's default of 10 throws would cut
+        // every episode short of it, so a flip episode runs to 100 loops unless --loops says otherwise
+        JsonNode summary = Json.load(dir.resolve("flip.json")).node();
+        assertEquals(EvaluateCommand.FLIP_DEFAULT_LOOPS, summary.get("max_loops").asInt());
+        assertEquals(100, EvaluateCommand.FLIP_DEFAULT_LOOPS);
+        assertTrue(text.contains("at most 100"), text);
+    }
+
+    @Test
     void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
         // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
