@@ -407,12 +407,13 @@ final class EvaluateCommand implements Callable<Integer> {
                 r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop" : r.inARow() >= loops
                         ? "reached --loops" : "ended with a throw that did not flip"));
         if (csv != null) {
-            StringBuilder rows = new StringBuilder("seed,loop,caught,flips,flight_rotation_deg,apex_m,catch_x,catch_y,catch_z,"
+            StringBuilder rows = new StringBuilder("seed,loop,caught,flips,flight_rotation_deg,release_spin_rad_s,apex_m,catch_x,catch_y,catch_z,"
                     + "landing_x,landing_y,landing_z,reward\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
-                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%d,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
-                            flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())), csvNumber(loop.apexHeight()),
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%d,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
+                            flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
+                            csvNumber(loop.releaseSpin()), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
                             loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
                 }

@@ -252,7 +252,7 @@ public final class CatchThrowEpisode {
         }
         RigidState o = obs.object();
         flight.observe(obs.handTouchedObject(), state.phase() != Phase.MIDDLE, o.position(), o.velocity(),
-                longAxis == null ? null : o.orientation().rotate(longAxis));
+                longAxis == null ? null : o.orientation().rotate(longAxis), o.angularVelocity());
     }
 
     /** The controller's reaction to an observation; the loop record if the loop ran out of time. */
@@ -310,7 +310,8 @@ public final class CatchThrowEpisode {
         }
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
                 loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
-                index == 0 || longAxis == null ? Double.NaN : flight.rotation(), flight.catchPoint(),
+                index == 0 || longAxis == null ? Double.NaN : flight.rotation(),
+                index == 0 ? Double.NaN : flight.releaseSpin(), flight.catchPoint(),
                 maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;

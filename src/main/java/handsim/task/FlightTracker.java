@@ -5,7 +5,8 @@ import handsim.math.Vec3;
 /**
  * One throw's flight, followed tick by tick: from the release (the last tick with a hand
  * contact while the object still rises) to the catch (the first contact once it comes down),
- * and how far the object's long axis turned end over end in between ({@link #endOverEndTurn}).
+ * how far the object's long axis turned end over end in between ({@link #endOverEndTurn}), and
+ * how fast it was turning so as it left the hand ({@link #endOverEndRate}).
  * A touch on the way up, when the still-rising hand meets the object again, is part of the
  * throw: the flight begins after it. Engine-free, so the flip criterion is tested on scripted
  * flights.
@@ -19,6 +20,7 @@ final class FlightTracker {
     private Stage stage = Stage.BEFORE_RELEASE;
     private Vec3 lastAxis;
     private double rotation;
+    private double releaseSpin = Double.NaN;
     private Vec3 catchPoint;
 
     FlightTracker(Vec3 up) {
@@ -30,6 +32,7 @@ final class FlightTracker {
         stage = Stage.BEFORE_RELEASE;
         lastAxis = null;
         rotation = 0;
+        releaseSpin = Double.NaN;
         catchPoint = null;
     }
 
@@ -39,14 +42,16 @@ final class FlightTracker {
      * @param touching the hand touched the object since the previous tick
      * @param throwBegun the controller has begun the throw (a loss of contact before it is no release)
      * @param axis the object's long axis (world), or null for an object without one
+     * @param angularVelocity the object's angular velocity (world, rad/s)
      */
-    void observe(boolean touching, boolean throwBegun, Vec3 position, Vec3 velocity, Vec3 axis) {
+    void observe(boolean touching, boolean throwBegun, Vec3 position, Vec3 velocity, Vec3 axis, Vec3 angularVelocity) {
         switch (stage) {
             case BEFORE_RELEASE -> {
                 if (!touching && throwBegun) {
                     stage = Stage.FLYING;
                     rotation = 0;
                     lastAxis = axis;
+                    releaseSpin = axis == null ? Double.NaN : endOverEndRate(angularVelocity, axis, up);
                 }
             }
             case FLYING -> {
@@ -73,6 +78,15 @@ final class FlightTracker {
         return rotation;
     }
 
+    /**
+     * How fast the long axis turned end over end in the first tick of the flight (rad/s; NaN
+     * before the release and for objects without a long axis). Free flight keeps it nearly
+     * constant, so the turn in flight is about this rate times the flight's duration.
+     */
+    double releaseSpin() {
+        return releaseSpin;
+    }
+
     /** Where the object's centre was at the catch (null before it). */
     Vec3 catchPoint() {
         return catchPoint;
@@ -90,8 +104,23 @@ final class FlightTracker {
         if (sin < 1e-12) {
             return 0; // no turn, or exactly half a turn in one tick (no axis to tell)
         }
-        double vertical = turnAxis.dot(up) / sin;
-        double angle = Math.atan2(sin, from.dot(to));
-        return angle * Math.sqrt(Math.max(0, 1 - vertical * vertical));
+        return Math.atan2(sin, from.dot(to)) * horizontalPart(turnAxis, sin, up);
+    }
+
+    /**
+     * The rate (rad/s) at which angular velocity {@code w} turns the unit axis {@code axis} end
+     * over end, weighted as in {@link #endOverEndTurn}: the part of {@code w} square to the axis,
+     * as far as it is horizontal. Spinning about the axis itself or about the vertical adds nothing.
+     */
+    static double endOverEndRate(Vec3 w, Vec3 axis, Vec3 up) {
+        Vec3 square = axis.cross(w.cross(axis)); // w's part square to the axis: what turns the axis
+        double rate = square.norm();
+        return rate < 1e-12 ? 0 : rate * horizontalPart(square, rate, up);
+    }
+
+    /** How horizontal an axis of length {@code norm} is: 1 when square to {@code up}, 0 along it. */
+    private static double horizontalPart(Vec3 axis, double norm, Vec3 up) {
+        double vertical = axis.dot(up) / norm;
+        return Math.sqrt(Math.max(0, 1 - vertical * vertical));
     }
 }

@@ -20,6 +20,9 @@ import handsim.math.Vec3;
  *     axes; a flat propeller spin does not count) while the object flew free of the hand, from
  *     the release of the throw to the first touch of the catch (rad, accumulated over the flight,
  *     so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
+ * @param releaseSpin how fast the long axis turned end over end as the object left the hand
+ *     (rad/s, the same weighting; NaN as for flightRotation): the flight's turn is about this
+ *     rate times the flight's duration
  * @param catchPoint where the object's centre was at the first touch of the catch after the
  *     throw's release (m, world; null for loop 0 and when nothing touched it again)
  * @param maxPenetration deepest hand-object penetration during the loop (m)
@@ -28,6 +31,6 @@ import handsim.math.Vec3;
  * @param duration simulated length of the loop (s)
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
-        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, Vec3 catchPoint,
+        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, Vec3 catchPoint,
         double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

@@ -22,7 +22,7 @@ class FlipTaskTest {
 
     private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where) {
         return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
-                Math.toRadians(rotationDeg), caught ? where : null, 0, 0, 0, 1);
+                Math.toRadians(rotationDeg), Double.NaN, caught ? where : null, 0, 0, 0, 1);
     }
 
     @Test
@@ -38,7 +38,7 @@ class FlipTaskTest {
         assertEquals(1, club.flips(flight(320, true, target)));
         assertEquals(2, club.flips(flight(720, true, target)));
         assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                null, 0, 0, 0, 1)), "the throw-in is no flip");
+                Double.NaN, null, 0, 0, 0, 1)), "the throw-in is no flip");
     }
 
     @Test
@@ -82,6 +82,12 @@ class FlipTaskTest {
         }
         assertEquals(Math.PI, total, 1e-9);
         assertEquals(1, can.flips(flight(Math.toDegrees(total), true, target)));
+        // the same weighting for rates: 5 rad/s about the horizontal z turns the x axis end over end
+        // at 5 rad/s; about the vertical or about the axis itself not at all; about n, 5 sin 60 deg
+        assertEquals(5, FlightTracker.endOverEndRate(new Vec3(0, 0, 5), Vec3.X, up), 1e-12);
+        assertEquals(0, FlightTracker.endOverEndRate(new Vec3(0, 5, 0), Vec3.X, up), 1e-12);
+        assertEquals(0, FlightTracker.endOverEndRate(new Vec3(5, 0, 0), Vec3.X, up), 1e-12);
+        assertEquals(5 * Math.sin(Math.toRadians(60)), FlightTracker.endOverEndRate(n.times(5), Vec3.X, up), 1e-9);
     }
 
     @Test
@@ -89,27 +95,31 @@ class FlipTaskTest {
         FlightTracker f = new FlightTracker(Vec3.Y);
         Vec3 rising = new Vec3(0, 2, 0), falling = new Vec3(0, -2, 0), p = Vec3.ZERO;
         double step = Math.toRadians(10);
+        Vec3 spin = new Vec3(0, 0, 12); // 12 rad/s about the horizontal z axis: end over end
         f.reset();
-        f.observe(true, false, p, rising, rotatedAboutZ(0)); // held, throw not begun
-        f.observe(false, false, p, rising, rotatedAboutZ(0)); // no contact for a tick before the throw: no release
+        f.observe(true, false, p, rising, rotatedAboutZ(0), spin); // held, throw not begun
+        f.observe(false, false, p, rising, rotatedAboutZ(0), spin); // no contact for a tick before the throw: no release
         assertEquals(0, f.rotation(), 0);
+        assertTrue(Double.isNaN(f.releaseSpin()), "no release yet");
         // released, turns 30 deg, then the rising hand meets it again: that turn was part of the throw
         for (int k = 0; k <= 3; k++) {
-            f.observe(false, true, p, rising, rotatedAboutZ(k * step));
+            f.observe(false, true, p, rising, rotatedAboutZ(k * step), spin);
         }
         assertEquals(3 * step, f.rotation(), 1e-9);
-        f.observe(true, true, p, rising, rotatedAboutZ(3 * step));
+        assertEquals(12, f.releaseSpin(), 1e-9, "the spin as it left the hand");
+        f.observe(true, true, p, rising, rotatedAboutZ(3 * step), spin);
         assertEquals(null, f.catchPoint(), "a touch on the way up is no catch");
         // released again: 18 ticks of 10 deg (a half turn), over the apex, caught on the way down
         for (int k = 3; k <= 21; k++) {
-            f.observe(false, true, p, k < 12 ? rising : falling, rotatedAboutZ(k * step));
+            f.observe(false, true, p, k < 12 ? rising : falling, rotatedAboutZ(k * step), spin.times(0.75));
         }
+        assertEquals(9, f.releaseSpin(), 1e-9, "the spin of the last release");
         Vec3 caughtAt = new Vec3(0, 0.8, 0.3);
-        f.observe(true, true, caughtAt, falling, rotatedAboutZ(21 * step));
+        f.observe(true, true, caughtAt, falling, rotatedAboutZ(21 * step), spin);
         assertEquals(Math.PI, f.rotation(), 1e-9, "only the turn since the last release counts");
         assertEquals(caughtAt, f.catchPoint());
         // after the catch nothing more is counted
-        f.observe(false, true, p, falling, rotatedAboutZ(30 * step));
+        f.observe(false, true, p, falling, rotatedAboutZ(30 * step), spin);
         assertEquals(Math.PI, f.rotation(), 1e-9);
     }
 
