@@ -25,17 +25,7 @@ class CommandsTest {
 
     @Test
     void demoHeadlessPrintsEachThrowAndWritesItsSummaryAndPlot(@TempDir Path dir) throws Exception {
-        PrintStream stdout = System.out;
-        ByteArrayOutputStream printed = new ByteArrayOutputStream();
-        int code;
-        try {
-            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
-            code = Main.run("demo", "--headless", "--loops", "1", "--seed", "1", "--out", dir.toString());
-        } finally {
-            System.setOut(stdout);
-        }
-        String text = printed.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, text);
+        String text = runPrinting("demo", "--headless", "--loops", "1", "--seed", "1", "--out", dir.toString());
         assertTrue(text.contains("object thrown in, caught") && text.contains("throw   1/1"), text);
         JsonNode summary = Json.load(dir.resolve("summary.json")).node();
         assertEquals(1, summary.get("throws").asInt());
@@ -48,18 +38,8 @@ class CommandsTest {
 
     @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
-        PrintStream stdout = System.out;
-        ByteArrayOutputStream printed = new ByteArrayOutputStream();
-        int code;
-        try {
-            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
-            code = Main.run("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
-                    "--workers", "1", "--json", dir.resolve("flip.json").toString());
-        } finally {
-            System.setOut(stdout);
-        }
-        String text = printed.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, text);
+        String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
+                "--workers", "1", "--json", dir.resolve("flip.json").toString());
         // issue 7's goal is a mean of 50 loops in a row: the height task's default of 10 throws would cut
         // every episode short of it, so a flip episode runs to 100 loops unless --loops says otherwise
         JsonNode summary = Json.load(dir.resolve("flip.json")).node();
@@ -125,5 +105,21 @@ class CommandsTest {
         // run folders are named task__name__seed__yyyyMMdd-HHmmss (RunFolders.next); the time makes legend labels too long to read
         assertEquals("flip__flip-warm__2", RunFolders.withoutStartTime(Path.of("runs/flip__flip-warm__2__20261123-173740")));
         assertEquals("cold", RunFolders.withoutStartTime(Path.of("cold")), "a folder named otherwise keeps its name");
+    }
+
+    /** Runs a command, asserts it exits 0, and returns what it printed. */
+    private static String runPrinting(String... args) {
+        PrintStream stdout = System.out;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        int code;
+        try {
+            System.setOut(new PrintStream(printed, true, StandardCharsets.UTF_8));
+            code = Main.run(args);
+        } finally {
+            System.setOut(stdout);
+        }
+        String text = printed.toString(StandardCharsets.UTF_8);
+        assertEquals(0, code, text);
+        return text;
     }
 }
