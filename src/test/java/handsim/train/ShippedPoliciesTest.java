@@ -14,8 +14,10 @@ import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightErrors;
 import handsim.task.LaunchDistribution;
+import handsim.task.LoopRecord;
 import handsim.task.ThrowTask;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -42,6 +44,23 @@ class ShippedPoliciesTest {
         assertEquals(20, r.loopsCompleted(), "20 throws caught in a row: " + r);
         double err = HeightErrors.of(r.loops()).absMean();
         assertTrue(err < 0.03, "mean |apex - goal| " + err + " m");
+    }
+
+    /**
+     * The shipped can-flip policy completes 10 flip-and-catch loops in a row from the throw-in of
+     * seed 20 (issue 7's regression guard). The seed is the one of seeds 1-20 on which
+     * {@code evaluate --task flip --object can --controller learned} made the most loops in a row
+     * (12): a guard that the policy, physics and controller still do what they did, not a
+     * measure of the policy (its mean over those seeds is 2.90, README).
+     */
+    @Test
+    void theCanFlipPolicyFlipsAndCatchesTenTimesInARowOnItsSeed() {
+        CatchEvaluation evaluation = evaluation("flip", "can");
+        List<LoopRecord> loops;
+        try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+            loops = evaluation.runWhileSuccessful(sim, 20, 10);
+        }
+        assertEquals(10, evaluation.successesInARow(loops), "flip-and-catch loops in a row: " + loops);
     }
 
     /** An evaluation of {@code task} with {@code object} thrown by the shipped policy. */
