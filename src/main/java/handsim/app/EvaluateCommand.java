@@ -69,10 +69,13 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (configs/objects)")
     String object;
 
+    /** Throws a height episode attempts after the first catch unless --loops says otherwise. */
+    static final int HEIGHT_DEFAULT_LOOPS = 10;
     /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of 50 (issue 7). */
     static final int FLIP_DEFAULT_LOOPS = 100;
 
-    @Option(names = "--loops", description = "height: throws to attempt per episode after the first catch (default 10); "
+    @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch (default "
+            + HEIGHT_DEFAULT_LOOPS + "); "
             + "flip: the most flip-and-catch loops an episode runs to (default " + FLIP_DEFAULT_LOOPS + ")")
     Integer loopsOption;
 
@@ -114,6 +117,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        loops = loopsOption != null ? loopsOption : task.equals("flip") ? FLIP_DEFAULT_LOOPS : HEIGHT_DEFAULT_LOOPS;
         validate();
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
@@ -155,7 +159,6 @@ final class EvaluateCommand implements Callable<Integer> {
         if (policy != null && !controller.equals("learned")) {
             throw new IllegalArgumentException("--policy goes with --controller learned");
         }
-        loops = loopsOption != null ? loopsOption : task.equals("flip") ? FLIP_DEFAULT_LOOPS : 10;
         if (loops < 0 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
         }
