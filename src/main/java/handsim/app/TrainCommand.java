@@ -52,6 +52,11 @@ final class TrainCommand implements Callable<Integer> {
                     + "holding it) with the config's pretrain settings, instead of from scratch")
     Path initActor;
 
+    @Option(names = "--episodes", paramLabel = "N",
+            description = "with --resume: raise the run's episode budget to N and go on training (a finished run "
+                    + "continues exactly as one configured with N episodes from the start; recorded in run.json)")
+    Long episodes;
+
     @Option(names = "--session-episodes", paramLabel = "N",
             description = "stop (with a checkpoint) after N more episodes; --resume goes on from there")
     Long sessionEpisodes;
@@ -70,7 +75,12 @@ final class TrainCommand implements Callable<Integer> {
         if (resume != null && !overrides.isEmpty()) {
             throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
         }
-        TrainConfig c = resume != null ? TrainRun.savedConfig(resume) : load(config, overrides);
+        if (episodes != null && resume == null) {
+            throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
+                    + "with --set training.episodes=N");
+        }
+        TrainConfig c = resume == null ? load(config, overrides)
+                : episodes != null ? TrainRun.extend(resume, episodes, extension()) : TrainRun.savedConfig(resume);
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
         ThrowEnvs envs = environments(c.run(), model);
@@ -109,6 +119,15 @@ final class TrainCommand implements Callable<Integer> {
 
     private Path runFolder(TrainConfig c) {
         return RunFolders.next(runs, c.run().task(), c.run().name(), c.learner().seed());
+    }
+
+    /** What {@code run.json} records about an extension of the run's budget. */
+    private ObjectNode extension() {
+        ObjectNode p = Json.mapper().createObjectNode();
+        p.put("command", "scripts/handsim train --resume " + resume + " --episodes " + episodes);
+        p.put("commit", Provenance.gitCommit());
+        p.put("at", LocalDateTime.now().toString());
+        return p;
     }
 
     /** What a run folder records about how the run was made. */

@@ -106,6 +106,35 @@ public final class TrainRun {
     }
 
     /**
+     * Raises the episode budget of the run in {@code dir} to {@code episodes} (it resumes with
+     * {@link #resume}). The learner's schedules count decisions, not the budget, so a finished
+     * run extended this way continues exactly as a run configured with the larger budget from its
+     * start, as long as the old budget was a whole number of rounds ({@code parallelEpisodes}).
+     * The saved config gets the new budget and {@code run.json} a record of the extension:
+     * {@code provenance} (command, commit, time) with the old and new budgets.
+     *
+     * @return the saved config with the new budget
+     */
+    public static TrainConfig extend(Path dir, long episodes, ObjectNode provenance) throws IOException {
+        TrainConfig old = savedConfig(dir);
+        long before = old.learner().training().episodes();
+        if (episodes < before) {
+            throw new IllegalArgumentException("--episodes " + episodes + " is below the run's budget of " + before
+                    + " episodes: a run can only be extended");
+        }
+        TrainConfig extended = TrainConfig.parse(Json.of(dir.resolve(CONFIG).toString(), Json.withOverrides(CONFIG,
+                old.toJson(), java.util.Map.of("training.episodes", Long.toString(episodes)))));
+        ObjectNode record = provenance.deepCopy();
+        record.put("from", before);
+        record.put("to", episodes);
+        ObjectNode runJson = (ObjectNode) Json.load(dir.resolve("run.json")).node();
+        runJson.withArray("extended").add(record);
+        Outputs.writeJson(dir.resolve(CONFIG), extended.toJson());
+        Outputs.writeJson(dir.resolve("run.json"), runJson);
+        return extended;
+    }
+
+    /**
      * Continues the run in {@code dir} from its last checkpoint, or from the start when it was
      * stopped before its first one.
      */

@@ -61,7 +61,37 @@ class TrainRunTest {
                 "losses.png")) {
             assertTrue(Files.size(split.resolve(f)) > 0, f + " written");
         }
-        List<EpisodeStats> a = MetricsCsv.read(whole.resolve(TrainRun.METRICS)), b = MetricsCsv.read(split.resolve(TrainRun.METRICS));
+        assertSameRun(whole, split);
+        assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(split).toJson(), "the merged config is saved in the folder");
+    }
+
+    @Test
+    void aFinishedRunExtendedToALargerBudgetEndsLikeARunGivenThatBudget(@TempDir Path tmp) throws Exception {
+        PrintStream quiet = new PrintStream(new ByteArrayOutputStream());
+        Path whole = tmp.resolve("whole"), extended = tmp.resolve("extended");
+        TrainConfig twoEpisodes = TrainConfig.parse(Json.of("2 episodes", Json.withOverrides("tiny", tinyConfig().toJson(),
+                Map.of("training.episodes", "2"))));
+        try (Rollouts r = rollouts()) {
+            TrainRun.start(whole, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet);
+            TrainRun.start(extended, twoEpisodes, envs(), r, Json.mapper().createObjectNode()).run(quiet);
+            assertEquals(2, MetricsCsv.read(extended.resolve(TrainRun.METRICS)).size(), "the first run finished at its budget");
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> TrainRun.extend(extended, 1, Json.mapper().createObjectNode()));
+            assertTrue(e.getMessage().contains("1") && e.getMessage().contains("2"), e.getMessage());
+            TrainRun.extend(extended, 4, Json.mapper().createObjectNode().put("command", "test"));
+            TrainRun.resume(extended, envs(), r).run(quiet);
+        }
+        assertSameRun(whole, extended);
+        assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(extended).toJson(), "the saved config has the new budget");
+        var record = Json.load(extended.resolve("run.json")).node().get("extended").get(0);
+        assertEquals(2, record.get("from").asInt());
+        assertEquals(4, record.get("to").asInt());
+        assertEquals("test", record.get("command").asText());
+    }
+
+    /** The two run folders hold the same 4 episodes and policies that act alike, bit for bit. */
+    private static void assertSameRun(Path whole, Path other) throws Exception {
+        List<EpisodeStats> a = MetricsCsv.read(whole.resolve(TrainRun.METRICS)), b = MetricsCsv.read(other.resolve(TrainRun.METRICS));
         assertEquals(4, b.size());
         for (int i = 0; i < 4; i++) {
             EpisodeStats x = a.get(i), y = b.get(i);
@@ -72,12 +102,10 @@ class TrainRunTest {
             assertEquals(x.updates(), y.updates());
         }
         assertTrue(a.get(3).updates() > 0, "the run got past the warm-up and learned");
-        // the policies the two runs ship act alike, bit for bit
-        ThrowPolicyFile pa = ThrowPolicyFile.load(whole.resolve(TrainRun.POLICY)), pb = ThrowPolicyFile.load(split.resolve(TrainRun.POLICY));
+        ThrowPolicyFile pa = ThrowPolicyFile.load(whole.resolve(TrainRun.POLICY)), pb = ThrowPolicyFile.load(other.resolve(TrainRun.POLICY));
         double[] state = new double[StateVector.Encoding.PAPER.baseSize() + 1];
         state[StateVector.Encoding.PAPER.baseSize()] = 1.2;
         assertArrayEquals(pa.policy().act(state), pb.policy().act(state), 0);
-        assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(split).toJson(), "the merged config is saved in the folder");
     }
 
     @Test
