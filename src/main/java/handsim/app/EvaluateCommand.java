@@ -388,8 +388,12 @@ final class EvaluateCommand implements Callable<Integer> {
 
     // ---- flip -----------------------------------------------------------------------------
 
-    /** A flip episode's outcome: loops in a row that flipped and were caught, flips made, whether it ended in a drop. */
-    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, List<LoopRecord> loops) {
+    /**
+     * A flip episode's outcome: loops in a row that flipped and were caught properly, flips made,
+     * and how it ended: in a drop, with the object caught but not lying in the hand, or with a
+     * throw that did not flip.
+     */
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, boolean tilted, List<LoopRecord> loops) {
     }
 
     private void evaluateFlip(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
@@ -404,18 +408,21 @@ final class EvaluateCommand implements Callable<Integer> {
                 List<LoopRecord> made = evaluation.runWhileSuccessful(sim, seed + i, loops);
                 int flips = made.stream().mapToInt(t::flips).sum();
                 LoopRecord last = made.get(made.size() - 1);
-                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught(), made);
+                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught(),
+                        last.index() > 0 && last.caught() && !t.properCatch(last), made);
             };
         }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop" : r.inARow() >= loops
-                        ? "reached --loops" : "ended with a throw that did not flip"));
+                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop"
+                        : r.tilted() ? String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
+                                Math.toDegrees(r.loops().get(r.loops().size() - 1).catchTilt()))
+                        : r.inARow() >= loops ? "reached --loops" : "ended with a throw that did not flip"));
         if (csv != null) {
-            StringBuilder rows = new StringBuilder("seed,loop,caught,flips,flight_rotation_deg,release_spin_rad_s,apex_m,catch_x,catch_y,catch_z,"
-                    + "landing_x,landing_y,landing_z,reward\n");
+            StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,apex_m,"
+                    + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
-                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%d,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
-                            flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
+                            csvNumber(Math.toDegrees(loop.catchTilt())), flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
                             csvNumber(loop.releaseSpin()), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
                             loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
@@ -433,6 +440,7 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("flips", runs.stream().mapToInt(FlipRun::flips).sum());
         out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
         out.put("drops", runs.stream().filter(FlipRun::dropped).count());
+        out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
         ArrayNode eps = out.putArray("episodes");
         for (FlipRun r : runs) {
             ObjectNode o = eps.addObject();
@@ -441,11 +449,12 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("flips", r.flips());
             o.put("throws", r.throwsMade());
             o.put("dropped", r.dropped());
+            o.put("tilted_catch", r.tilted());
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
-                + "(min %d, max %d, at most %d); %d flips in %d throws; %d drops%n", controller, object, runs.size(), mean,
-                out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(),
-                out.get("throws").asInt(), out.get("drops").asInt());
+                + "(min %d, max %d, at most %d); %d flips in %d throws; %d drops, %d catches not lying in the hand%n", controller,
+                object, runs.size(), mean, out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), loops,
+                out.get("flips").asInt(), out.get("throws").asInt(), out.get("drops").asInt(), out.get("tilted_catches").asInt());
         if (plot != null) {
             double[] x = new double[runs.size()], y = new double[runs.size()];
             for (int i = 0; i < x.length; i++) {

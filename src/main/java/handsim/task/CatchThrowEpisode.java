@@ -64,6 +64,8 @@ public final class CatchThrowEpisode {
     private boolean boxHit;
     private double boxDistance;
     private Vec3 landing;
+    /** The judged catch's tilt of the long axis out of the palm plane (see {@link LoopRecord#catchTilt}). */
+    private double catchTilt = Double.NaN;
     private ThrowParameters loopThrow;
     private double loopGoal = Double.NaN;
 
@@ -269,12 +271,19 @@ public final class CatchThrowEpisode {
         return null;
     }
 
-    /** The catch is judged when MIDDLE ends: is the object resting in the hand? */
+    /**
+     * The catch is judged when MIDDLE ends: is the object resting in the hand? For a long object
+     * also how far its axis stands out of the palm's plane (a task may ask for it to lie in it).
+     */
     private LoopRecord judgeCatch(Observation obs) {
         boolean held = obs.object().position().distance(obs.palm().origin()) < limits.holdDistance();
         if (!held) {
             landing = obs.object().position();
             status = Status.DROPPED;
+        } else if (longAxis != null) {
+            Vec3 axis = obs.object().orientation().rotate(longAxis);
+            Vec3 palmNormal = obs.palm().rotation().rotate(new Vec3(0, 1, 0));
+            catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(palmNormal)) / axis.norm()));
         }
         return finishLoop(held);
     }
@@ -295,6 +304,7 @@ public final class CatchThrowEpisode {
         boxDistance = Double.POSITIVE_INFINITY;
         flight.reset();
         landing = null;
+        catchTilt = Double.NaN;
         loopThrow = loops.isEmpty() ? null : state.currentThrow();
         loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
         if (!loops.isEmpty()) {
@@ -311,7 +321,7 @@ public final class CatchThrowEpisode {
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
                 loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
                 index == 0 || longAxis == null ? Double.NaN : flight.rotation(),
-                index == 0 ? Double.NaN : flight.releaseSpin(), flight.catchPoint(),
+                index == 0 ? Double.NaN : flight.releaseSpin(), catchTilt, flight.catchPoint(),
                 maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;

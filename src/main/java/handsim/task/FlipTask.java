@@ -15,8 +15,10 @@ import java.util.Map;
  * contact on the way down, by {@link FlightTracker}; turning about the vertical, a
  * flat spin, does not count): {@code flips = floor((rotation + tolerance) /
  * flipAngle)}, with flipAngle half a turn for a can (end for end is the same can) and a whole
- * turn for a club (the handle comes back to the hand). Reward eq. (7) as read in SPEC.md: a
- * caught throw that flipped scores {@code exp(-sharpness |p_p - p_d|) + flipBonus}, anything else
+ * turn for a club (the handle comes back to the hand). A flip must be caught properly: held in
+ * the hand when MIDDLE ends and lying in it, its long axis at most {@code maxCatchTilt} out of
+ * the palm's plane ({@link LoopRecord#catchTilt}; a can standing on end in the palm is no catch
+ * to flip from). Reward eq. (7) as read in SPEC.md: a properly caught throw that flipped scores {@code exp(-sharpness |p_p - p_d|) + flipBonus}, anything else
  * {@code -missWeight |p_p - p_d|}; p_p is where the object was caught (or came down, when
  * dropped) and p_d a spot above the hand where a good flip comes down.
  */
@@ -35,6 +37,7 @@ public final class FlipTask implements ThrowTask {
      * {@code configs/tasks/flip.json}.
      *
      * @param tolerance a flip is counted this much short of its angle (rad)
+     * @param maxCatchTilt a catch counts when the long axis stands at most this far out of the palm's plane (rad)
      * @param sharpness the 10 of eq. (7) (1/m)
      * @param missWeight the 0.1 of eq. (7)'s miss term (1/m)
      * @param flipBonus r_flip of eq. (7)
@@ -42,7 +45,7 @@ public final class FlipTask implements ThrowTask {
      * @param space the box of throw parameters: flips need far more palm rotation than the other tasks
      * @param objects the objects that can be flipped, by name
      */
-    public record Config(double tolerance, double sharpness, double missWeight, double flipBonus, Vec3 targetOffset,
+    public record Config(double tolerance, double maxCatchTilt, double sharpness, double missWeight, double flipBonus, Vec3 targetOffset,
             ThrowSpace space, Map<String, ObjectFlip> objects) {
 
         public Config {
@@ -50,7 +53,7 @@ public final class FlipTask implements ThrowTask {
         }
 
         public static Config parse(Json j) {
-            j.allow("comment");
+            j.allow("comment", "maxCatchTiltComment");
             Json objs = j.get("objects");
             objs.allow("comment");
             Map<String, ObjectFlip> flips = new LinkedHashMap<>();
@@ -72,7 +75,8 @@ public final class FlipTask implements ThrowTask {
                 flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal));
                 o.requireNoUnknownFields();
             }
-            Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)), j.positive("sharpness"),
+            Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
+                    Math.toRadians(j.number("maxCatchTiltDeg", 0, 90)), j.positive("sharpness"),
                     j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"), space, flips);
             j.requireNoUnknownFields();
             return c;
@@ -151,7 +155,12 @@ public final class FlipTask implements ThrowTask {
 
     @Override
     public boolean success(LoopRecord loop) {
-        return loop.caught() && flips(loop) >= 1;
+        return properCatch(loop) && flips(loop) >= 1;
+    }
+
+    /** Held in the hand and lying in it: the long axis at most maxCatchTilt out of the palm's plane. */
+    public boolean properCatch(LoopRecord loop) {
+        return loop.caught() && !(loop.catchTilt() > config.maxCatchTilt());
     }
 
     @Override

@@ -23,6 +23,9 @@ import handsim.math.Vec3;
  * @param releaseSpin how fast the long axis turned end over end as the object left the hand
  *     (rad/s, the same weighting; NaN as for flightRotation): the flight's turn is about this
  *     rate times the flight's duration
+ * @param catchTilt how far the object's long axis stood out of the palm's plane when the catch
+ *     was judged at the end of MIDDLE (rad: 0 lying in the palm, pi/2 standing on end; NaN when
+ *     dropped and for objects without a long axis)
  * @param catchPoint where the object's centre was at the first touch of the catch after the
  *     throw's release (m, world; null for loop 0 and when nothing touched it again)
  * @param maxPenetration deepest hand-object penetration during the loop (m)
@@ -31,6 +34,7 @@ import handsim.math.Vec3;
  * @param duration simulated length of the loop (s)
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
-        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, Vec3 catchPoint,
+        ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, double catchTilt,
+        Vec3 catchPoint,
         double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

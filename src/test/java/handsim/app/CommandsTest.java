@@ -39,13 +39,27 @@ class CommandsTest {
     @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
-                "--workers", "1", "--json", dir.resolve("flip.json").toString());
+                "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());
         // issue 7's goal is a mean of 50 loops in a row: the height task's default of 10 throws would cut
         // every episode short of it, so a flip episode runs to 100 loops unless --loops says otherwise
         JsonNode summary = Json.load(dir.resolve("flip.json")).node();
         assertEquals(EvaluateCommand.FLIP_DEFAULT_LOOPS, summary.get("max_loops").asInt());
         assertEquals(100, EvaluateCommand.FLIP_DEFAULT_LOOPS);
         assertTrue(text.contains("at most 100"), text);
+        // every judged catch has the can's tilt out of the palm's plane, 0..90 deg; the launched can
+        // of seed 1 comes to lie in the palm (a scratch trace of 215 catches: 3 in 4 under 30 deg)
+        assertTrue(summary.has("tilted_catches"), summary.toString());
+        java.util.List<String> rows = Files.readAllLines(dir.resolve("flip.csv"));
+        int column = java.util.Arrays.asList(rows.get(0).split(",")).indexOf("catch_tilt_deg");
+        for (String row : rows.subList(1, rows.size())) {
+            String[] f = row.split(",", -1);
+            if (f[2].equals("true")) {
+                double tilt = Double.parseDouble(f[column]);
+                assertTrue(tilt >= 0 && tilt <= 90, row);
+            }
+        }
+        double throwIn = Double.parseDouble(rows.get(1).split(",", -1)[column]);
+        assertTrue(throwIn < 30, "the caught throw-in lies in the palm: " + rows.get(1));
     }
 
     @Test

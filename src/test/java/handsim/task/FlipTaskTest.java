@@ -21,8 +21,12 @@ class FlipTaskTest {
     private final Vec3 target = TestSupport.neutralPalm().plus(new Vec3(0, 0.12, 0));
 
     private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where) {
+        return flight(rotationDeg, caught, where, caught ? 10 : Double.NaN);
+    }
+
+    private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where, double catchTiltDeg) {
         return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
-                Math.toRadians(rotationDeg), Double.NaN, caught ? where : null, 0, 0, 0, 1);
+                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), caught ? where : null, 0, 0, 0, 1);
     }
 
     @Test
@@ -38,7 +42,7 @@ class FlipTaskTest {
         assertEquals(1, club.flips(flight(320, true, target)));
         assertEquals(2, club.flips(flight(720, true, target)));
         assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, null, 0, 0, 0, 1)), "the throw-in is no flip");
+                Double.NaN, Double.NaN, null, 0, 0, 0, 1)), "the throw-in is no flip");
     }
 
     @Test
@@ -53,6 +57,20 @@ class FlipTaskTest {
         // flipped but dropped 1 m away
         Vec3 ground = target.plus(new Vec3(0, 0, 1));
         assertEquals(-0.1 * 1, can.reward(flight(200, false, ground)), 1e-12);
+    }
+
+    @Test
+    void aFlipCountsOnlyWhenTheObjectIsCaughtLyingInTheHand() {
+        // configs/tasks/flip.json: the long axis at most 45 deg out of the palm's plane (issue 7's "aligned with the palm")
+        assertTrue(can.success(flight(180, true, target, 0)), "lying flat in the palm");
+        assertTrue(can.success(flight(180, true, target, 44)), "1 deg inside the tilt allowed");
+        assertFalse(can.success(flight(180, true, target, 46)), "1 deg past it: leaning on the fingers");
+        assertFalse(can.success(flight(180, true, target, 85)), "standing on end in the palm");
+        assertTrue(can.properCatch(flight(20, true, target, 30)), "a catch without a flip can still be proper");
+        assertFalse(can.properCatch(flight(180, false, target)), "a drop is no catch");
+        // eq. (7): a flip caught standing scores as a miss, -0.1 |p_p - p_d|
+        Vec3 off = target.plus(new Vec3(0.05, 0, 0));
+        assertEquals(-0.1 * 0.05, can.reward(flight(180, true, off, 80)), 1e-12);
     }
 
     @Test
