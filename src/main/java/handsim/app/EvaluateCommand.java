@@ -394,6 +394,18 @@ final class EvaluateCommand implements Callable<Integer> {
      * throw that did not flip.
      */
     private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, boolean tilted, List<LoopRecord> loops) {
+
+        /** How the episode ended, for its progress line; {@code maxLoops} is --loops. */
+        String ending(String object, int maxLoops) {
+            if (dropped) {
+                return "ended in a drop";
+            }
+            if (tilted) {
+                return String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
+                        Math.toDegrees(loops.get(loops.size() - 1).catchTilt()));
+            }
+            return inARow >= maxLoops ? "reached --loops" : "ended with a throw that did not flip";
+        }
     }
 
     private void evaluateFlip(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
@@ -412,10 +424,7 @@ final class EvaluateCommand implements Callable<Integer> {
                         last.index() > 0 && last.caught() && !t.properCatch(last), made);
             };
         }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.dropped() ? "ended in a drop"
-                        : r.tilted() ? String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
-                                Math.toDegrees(r.loops().get(r.loops().size() - 1).catchTilt()))
-                        : r.inARow() >= loops ? "reached --loops" : "ended with a throw that did not flip"));
+                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
         if (csv != null) {
             StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,apex_m,"
                     + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward\n");
