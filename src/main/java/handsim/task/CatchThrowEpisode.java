@@ -281,9 +281,8 @@ public final class CatchThrowEpisode {
             landing = obs.object().position();
             status = Status.DROPPED;
         } else if (longAxis != null) {
-            Vec3 axis = obs.object().orientation().rotate(longAxis);
-            Vec3 palmNormal = obs.palm().rotation().rotate(new Vec3(0, 1, 0));
-            catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(palmNormal)) / axis.norm()));
+            Vec3 axis = obs.object().orientation().rotate(longAxis); // unit: ObjectSpec normalises it
+            catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
         }
         return finishLoop(held);
     }

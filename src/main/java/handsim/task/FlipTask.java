@@ -18,9 +18,10 @@ import java.util.Map;
  * turn for a club (the handle comes back to the hand). A flip must be caught properly: held in
  * the hand when MIDDLE ends and lying in it, its long axis at most {@code maxCatchTilt} out of
  * the palm's plane ({@link LoopRecord#catchTilt}; a can standing on end in the palm is no catch
- * to flip from). Reward eq. (7) as read in SPEC.md: a properly caught throw that flipped scores {@code exp(-sharpness |p_p - p_d|) + flipBonus}, anything else
- * {@code -missWeight |p_p - p_d|}; p_p is where the object was caught (or came down, when
- * dropped) and p_d a spot above the hand where a good flip comes down.
+ * to flip from). Reward eq. (7) as read in SPEC.md: a properly caught throw that flipped
+ * scores {@code exp(-sharpness |p_p - p_d|) + flipBonus}, anything else {@code -missWeight
+ * |p_p - p_d|}; p_p is where the object was caught (or came down, when dropped) and p_d a spot
+ * above the hand where a good flip comes down.
  */
 public final class FlipTask implements ThrowTask {
 

@@ -16,6 +16,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * One training run in its folder ({@code runs/<task>__<name>__<seed>__<time>/}): the merged
@@ -34,6 +35,8 @@ import java.util.Locale;
 public final class TrainRun {
 
     public static final String CONFIG = "config.json";
+    /** Provenance: command, seed, commit, and the budget extensions. */
+    public static final String RUN_JSON = "run.json";
     public static final String CHECKPOINT = "checkpoint.zip";
     public static final String METRICS = "metrics.csv";
     public static final String POLICY = "policy.json";
@@ -76,7 +79,7 @@ public final class TrainRun {
         double[][][] data = initDataset == null ? null : readDataset(initDataset, envs); // read before anything is written
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
-        Outputs.writeJson(dir.resolve("run.json"), provenance);
+        Outputs.writeJson(dir.resolve(RUN_JSON), provenance);
         if (initDataset != null) {
             Files.copy(Files.isDirectory(initDataset) ? initDataset.resolve(Warmstart.DATASET) : initDataset,
                     dir.resolve(INIT_DATASET));
@@ -123,14 +126,14 @@ public final class TrainRun {
                     + " episodes: a run can only be extended");
         }
         TrainConfig extended = TrainConfig.parse(Json.of(dir.resolve(CONFIG).toString(), Json.withOverrides(CONFIG,
-                old.toJson(), java.util.Map.of("training.episodes", Long.toString(episodes)))));
+                old.toJson(), Map.of("training.episodes", Long.toString(episodes)))));
         ObjectNode record = provenance.deepCopy();
         record.put("from", before);
         record.put("to", episodes);
-        ObjectNode runJson = (ObjectNode) Json.load(dir.resolve("run.json")).node();
+        ObjectNode runJson = (ObjectNode) Json.load(dir.resolve(RUN_JSON)).node();
         runJson.withArray("extended").add(record);
         Outputs.writeJson(dir.resolve(CONFIG), extended.toJson());
-        Outputs.writeJson(dir.resolve("run.json"), runJson);
+        Outputs.writeJson(dir.resolve(RUN_JSON), runJson);
         return extended;
     }
 

@@ -83,7 +83,7 @@ class TrainRunTest {
         }
         assertSameRun(whole, extended);
         assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(extended).toJson(), "the saved config has the new budget");
-        var record = Json.load(extended.resolve("run.json")).node().get("extended").get(0);
+        var record = Json.load(extended.resolve(TrainRun.RUN_JSON)).node().get("extended").get(0);
         assertEquals(2, record.get("from").asInt());
         assertEquals(4, record.get("to").asInt());
         assertEquals("test", record.get("command").asText());
