@@ -359,12 +359,12 @@ final class EvaluateCommand implements Callable<Integer> {
         long successes = results.stream().filter(BoxTests.Test::success).count();
         out.put("tests", results.size());
         out.put("successes", successes);
-        out.put("success_rate", BoxTests.successRate(results));
+        putRate(out, "success_rate", results);
         out.put("loops_required", BOX_LOOPS_REQUIRED);
         out.put("region_radius_m", radius);
         List<BoxTests.Test> inner = BoxTests.band(results, 0, 0.5 * radius);
         out.put("inner_half_tests", inner.size());
-        out.put("inner_half_success_rate", BoxTests.successRate(inner));
+        putRate(out, "inner_half_success_rate", inner);
         ArrayNode bands = out.putArray("by_distance");
         for (int b = 0; b < BOX_BANDS; b++) {
             double lo = radius * b / BOX_BANDS, hi = b == BOX_BANDS - 1 ? Double.POSITIVE_INFINITY : radius * (b + 1) / BOX_BANDS;
@@ -373,17 +373,27 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("from_m", lo);
             o.put("to_m", Math.min(hi, radius));
             o.put("tests", in.size());
-            o.put("success_rate", BoxTests.successRate(in));
+            putRate(o, "success_rate", in);
         }
-        System.out.printf(Locale.ROOT, "box task, %s controller, %s: %d of %d tests succeeded (%.1f %%); inner half of the region "
-                + "(within %.3f m of its centre): %.1f %% of %d%n", controller, object, successes, results.size(),
-                100 * BoxTests.successRate(results), 0.5 * radius, 100 * BoxTests.successRate(inner), inner.size());
+        System.out.printf(Locale.ROOT, "box task, %s controller, %s: %d of %d tests succeeded (%s); inner half of the region "
+                + "(within %.3f m of its centre): %s of %d%n", controller, object, successes, results.size(),
+                percent(results), 0.5 * radius, percent(inner), inner.size());
         writeCsv(rows);
         if (plot != null) {
             BoxTests.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
                     "Box tests, %s controller (%d of %d succeeded)", controller, successes, results.size()));
             System.out.println("wrote " + plot);
         }
+    }
+
+    /** A success rate in the JSON: null for no tests (NaN is not JSON). */
+    private static void putRate(ObjectNode node, String field, List<BoxTests.Test> tests) {
+        if (tests.isEmpty()) node.putNull(field);
+        else node.put(field, BoxTests.successRate(tests));
+    }
+
+    private static String percent(List<BoxTests.Test> tests) {
+        return tests.isEmpty() ? "no tests" : String.format(Locale.ROOT, "%.1f %%", 100 * BoxTests.successRate(tests));
     }
 
     // ---- flip -----------------------------------------------------------------------------

@@ -63,6 +63,25 @@ class CommandsTest {
     }
 
     @Test
+    void boxEvaluationOfFewTestsWritesStrictJsonWithNoRateForAnEmptyBand(@TempDir Path dir) throws Exception {
+        Path json = dir.resolve("box.json");
+        String text = runPrinting("evaluate", "--task", "box", "--tests", "1", "--seed", "1", "--workers", "1",
+                "--json", json.toString());
+        // one test leaves most distance bands empty: their rate is undefined, written as null (NaN is
+        // not JSON, and a strict parser such as Jackson's default one rejects it)
+        JsonNode summary = new com.fasterxml.jackson.databind.ObjectMapper().readTree(json.toFile());
+        assertEquals(1, summary.get("tests").asInt());
+        int empty = 0;
+        for (JsonNode band : summary.get("by_distance")) {
+            boolean none = band.get("tests").asInt() == 0;
+            assertEquals(none, band.get("success_rate").isNull(), band.toString());
+            if (none) empty++;
+        }
+        assertTrue(empty > 0, "one test fills one band at most: " + summary);
+        assertTrue(!text.contains("NaN"), text);
+    }
+
+    @Test
     void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
         // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
