@@ -114,7 +114,8 @@ public final class TrainRun {
      * run extended this way continues exactly as a run configured with the larger budget from its
      * start, as long as the old budget was a whole number of rounds ({@code parallelEpisodes}).
      * The saved config gets the new budget and {@code run.json} a record of the extension:
-     * {@code provenance} (command, commit, time) with the old and new budgets.
+     * {@code provenance} (command, commit, time) with the old and new budgets. A budget equal to
+     * the run's own changes nothing (so a killed extension is resumed by the same command).
      *
      * @return the saved config with the new budget
      */
@@ -125,6 +126,7 @@ public final class TrainRun {
             throw new IllegalArgumentException("--episodes " + episodes + " is below the run's budget of " + before
                     + " episodes: a run can only be extended");
         }
+        if (episodes == before) return old;
         TrainConfig extended = TrainConfig.parse(Json.of(dir.resolve(CONFIG).toString(), Json.withOverrides(CONFIG,
                 old.toJson(), Map.of("training.episodes", Long.toString(episodes)))));
         ObjectNode record = provenance.deepCopy();

@@ -80,6 +80,8 @@ class TrainRunTest {
             assertTrue(e.getMessage().contains("1") && e.getMessage().contains("2"), e.getMessage());
             TrainRun.extend(extended, 4, Json.mapper().createObjectNode().put("command", "test"));
             TrainRun.resume(extended, envs(), r).run(quiet);
+            // the same command again (a killed extension resumed) is no second extension
+            TrainRun.extend(extended, 4, Json.mapper().createObjectNode().put("command", "again"));
         }
         assertSameRun(whole, extended);
         assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(extended).toJson(), "the saved config has the new budget");
@@ -87,6 +89,7 @@ class TrainRunTest {
         assertEquals(2, record.get("from").asInt());
         assertEquals(4, record.get("to").asInt());
         assertEquals("test", record.get("command").asText());
+        assertEquals(1, Json.load(extended.resolve(TrainRun.RUN_JSON)).node().get("extended").size(), "one extension recorded");
     }
 
     /** The two run folders hold the same 4 episodes and policies that act alike, bit for bit. */
