@@ -311,7 +311,9 @@ public final class Json {
     /**
      * Applies {@code key=value} overrides to a copy of {@code root}. Keys are dotted paths into
      * existing objects ({@code ddpg.actorLr=1e-4}); values are parsed as JSON when they parse and
-     * taken as strings otherwise. Unknown keys are rejected, so a typo never silently does nothing.
+     * taken as strings otherwise. A key may name a field the file leaves out (an optional one, such
+     * as {@code training.criticWarmupDecisions}): the schema's parser, which rejects fields it does
+     * not know, then catches a misspelt key, so a typo never silently does nothing.
      */
     public static JsonNode withOverrides(String source, JsonNode root, Map<String, String> overrides) {
         JsonNode copy = root.deepCopy();
@@ -325,9 +327,6 @@ public final class Json {
                 }
             }
             String leaf = parts[parts.length - 1];
-            if (!parent.has(leaf)) {
-                throw new ConfigException(source + ": --set " + e.getKey() + ": no such field \"" + leaf + "\"");
-            }
             ((ObjectNode) parent).set(leaf, parseValue(e.getValue()));
         }
         return copy;

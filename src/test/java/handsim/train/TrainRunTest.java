@@ -1,9 +1,12 @@
 package handsim.train;
 
+import com.fasterxml.jackson.databind.JsonNode;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.ConfigException;
@@ -109,6 +112,19 @@ class TrainRunTest {
         double[] state = new double[StateVector.Encoding.PAPER.baseSize() + 1];
         state[StateVector.Encoding.PAPER.baseSize()] = 1.2;
         assertArrayEquals(pa.policy().act(state), pb.policy().act(state), 0);
+    }
+
+    @Test
+    void setMayGiveAnOptionalFieldTheFileLeavesOutButAMisspeltOneIsNamed() {
+        Path file = Home.resolve("configs/train/height.json");
+        JsonNode node = Json.load(file).node();
+        assertTrue(!node.get("training").has("criticWarmupDecisions"), "the height run leaves the optional field out");
+        TrainConfig c = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), node,
+                Map.of("training.criticWarmupDecisions", "100"))));
+        assertEquals(100, c.learner().training().criticWarmupDecisions());
+        ConfigException e = org.junit.jupiter.api.Assertions.assertThrows(ConfigException.class, () -> TrainConfig.parse(
+                Json.of("typo", Json.withOverrides(file.toString(), node, Map.of("training.criticWarmupDecisionz", "100")))));
+        assertTrue(e.getMessage().contains("criticWarmupDecisionz") && e.getMessage().contains("unknown field"), e.getMessage());
     }
 
     @Test
