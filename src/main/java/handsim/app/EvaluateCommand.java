@@ -414,7 +414,16 @@ final class EvaluateCommand implements Callable<Integer> {
                 return String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
                         Math.toDegrees(loops.get(loops.size() - 1).catchTilt()));
             }
-            return inARow >= maxLoops ? "reached --loops" : "ended with a throw that did not flip";
+            return reachedLimit(maxLoops) ? "reached --loops" : "ended with a throw that did not flip";
+        }
+
+        boolean reachedLimit(int maxLoops) {
+            return inARow >= maxLoops;
+        }
+
+        /** Ended with a throw that was caught lying in the hand but did not flip. */
+        boolean unflipped(int maxLoops) {
+            return !dropped && !tilted && !reachedLimit(maxLoops);
         }
     }
 
@@ -460,6 +469,7 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
         out.put("drops", runs.stream().filter(FlipRun::dropped).count());
         out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
+        out.put("unflipped_endings", runs.stream().filter(r -> r.unflipped(loops)).count());
         ArrayNode eps = out.putArray("episodes");
         for (FlipRun r : runs) {
             ObjectNode o = eps.addObject();
@@ -471,9 +481,10 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("tilted_catch", r.tilted());
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
-                + "(min %d, max %d, at most %d); %d flips in %d throws; %d drops, %d catches not lying in the hand%n", controller,
-                object, runs.size(), mean, out.get("loops_completed_min").asInt(), out.get("loops_completed_max").asInt(), loops,
-                out.get("flips").asInt(), out.get("throws").asInt(), out.get("drops").asInt(), out.get("tilted_catches").asInt());
+                + "(min %d, max %d, at most %d); %d flips in %d throws; ended by %d drops, %d catches not lying in the hand, "
+                + "%d throws that did not flip%n", controller, object, runs.size(), mean, out.get("loops_completed_min").asInt(),
+                out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
+                out.get("drops").asInt(), out.get("tilted_catches").asInt(), out.get("unflipped_endings").asInt());
         if (plot != null) {
             double[] x = new double[runs.size()], y = new double[runs.size()];
             for (int i = 0; i < x.length; i++) {

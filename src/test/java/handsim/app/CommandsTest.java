@@ -49,6 +49,12 @@ class CommandsTest {
         // every judged catch has the can's tilt out of the palm's plane, 0..90 deg; the launched can
         // of seed 1 comes to lie in the palm (a scratch trace of 215 catches: 3 in 4 under 30 deg)
         assertTrue(summary.has("tilted_catches"), summary.toString());
+        // an episode ends one way only: a drop, a catch not lying in the hand, a throw that did not
+        // flip, or --loops reached
+        long reached = 0;
+        for (JsonNode e : summary.get("episodes")) if (e.get("loops_completed").asInt() >= summary.get("max_loops").asInt()) reached++;
+        assertEquals(summary.get("episodes_run").asLong(), summary.get("drops").asLong() + summary.get("tilted_catches").asLong()
+                + summary.get("unflipped_endings").asLong() + reached, summary.toString());
         java.util.List<String> rows = Files.readAllLines(dir.resolve("flip.csv"));
         int column = java.util.Arrays.asList(rows.get(0).split(",")).indexOf("catch_tilt_deg");
         for (String row : rows.subList(1, rows.size())) {
