@@ -62,7 +62,7 @@ public final class TestSupport {
         return new handsim.train.ThrowEnvs("height", object("sphere"), () -> heightTask(null), cc,
                 handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), space,
-                new handsim.train.ThrowEnv.Settings(5, -1),
+                new handsim.train.ThrowEnv.Settings(5, -1, handsim.train.SpinShaping.NONE),
                 new handsim.task.StateVector(handsim.task.StateVector.Encoding.PAPER, java.util.Optional.empty()));
     }
 

@@ -19,7 +19,7 @@ import java.util.function.Function;
  * A throw task as the learner sees it (on a simulator it uses but does not own): an episode starts with an object thrown into the hand
  * and caught; every step is one THROW, whose parameters are the action (mapped from [-1, 1]^7
  * onto the {@link ThrowSpace}), and lasts until the next THROW is due. The reward is the task's
- * (eq. 5-7) for the throw and its catch; a drop, a loop cut off by time or a diverged
+ * (eq. 5-7) for the throw and its catch, plus the run's {@link SpinShaping} if any; a drop, a loop cut off by time or a diverged
  * simulation is a real end (terminal). The loop cap of an episode is the trainer's truncation.
  *
  * <p>{@link #reset} is a function of its seed alone (the simulator is reset, the launch and the
@@ -32,8 +32,9 @@ public final class ThrowEnv implements Env {
     /**
      * @param firstCatchAttempts launches tried per reset before giving up
      * @param divergedReward the reward of a throw whose simulation diverged (an episode end)
+     * @param spinShaping a training-only term added to the task's reward ({@link SpinShaping#NONE}: none)
      */
-    public record Settings(int firstCatchAttempts, double divergedReward) {
+    public record Settings(int firstCatchAttempts, double divergedReward, SpinShaping spinShaping) {
     }
 
     /** The throw policy of the episodes: it hands the controller the action of the current step. */
@@ -128,7 +129,7 @@ public final class ThrowEnv implements Env {
         }
         List<LoopRecord> loops = episode.loops();
         LoopRecord thrown = loops.get(loops.size() - 1);
-        double reward = task.reward(thrown);
+        double reward = task.reward(thrown) + settings.spinShaping().bonus(thrown);
         if (next == null) {
             return new Step(stateVector.encode(episode.observe(), task.goal()), reward, true, false);
         }

@@ -27,15 +27,17 @@ public record TrainConfig(Run run, TrainingConfig learner) {
      * @param progressSeconds seconds between progress lines
      * @param state how the learner's state is written ({@code paper} when absent: the runs made
      *     before there was a choice)
+     * @param spinShaping a training-only reward term for the release spin of flips ({@link
+     *     SpinShaping}; {@link SpinShaping#NONE}, the paper's reward, when absent)
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
-            double progressSeconds, StateVector.Encoding state) {
+            double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping) {
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
-                    j.positive("progressSeconds"), StateVector.Encoding.read(j));
+                    j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
@@ -61,6 +63,9 @@ public record TrainConfig(Run run, TrainingConfig learner) {
         ObjectNode root = Json.mapper().createObjectNode();
         ObjectNode runNode = Json.mapper().valueToTree(run);
         runNode.put("state", run.state().label());
+        if (run.spinShaping().equals(SpinShaping.NONE)) {
+            runNode.remove("spinShaping");
+        }
         root.set("run", runNode);
         root.setAll(learner.toJson());
         return root;
