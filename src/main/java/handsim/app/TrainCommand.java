@@ -114,7 +114,8 @@ final class TrainCommand implements Callable<Integer> {
         ObjectSpec object = Runtime.object(run.object());
         return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
                 Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
-                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping()), new StateVector(run.state(), object.longAxis()));
+                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping()),
+                new StateVector(run.state(), object.longAxis()));
     }
 
     private Path runFolder(TrainConfig c) {
