@@ -114,7 +114,7 @@ final class TrainCommand implements Callable<Integer> {
         ObjectSpec object = Runtime.object(run.object());
         return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
                 Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
-                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping()),
+                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
                 new StateVector(run.state(), object.longAxis()));
     }
 

@@ -33,8 +33,10 @@ public final class ThrowEnv implements Env {
      * @param firstCatchAttempts launches tried per reset before giving up
      * @param divergedReward the reward of a throw whose simulation diverged (an episode end)
      * @param spinShaping a training-only term added to the task's reward ({@link SpinShaping#NONE}: none)
+     * @param endAtFailedThrow end the episode (terminal) at the first throw that is not a success
+     *     of the task, as evaluation does, instead of only at a drop
      */
-    public record Settings(int firstCatchAttempts, double divergedReward, SpinShaping spinShaping) {
+    public record Settings(int firstCatchAttempts, double divergedReward, SpinShaping spinShaping, boolean endAtFailedThrow) {
     }
 
     /** The throw policy of the episodes: it hands the controller the action of the current step. */
@@ -130,7 +132,7 @@ public final class ThrowEnv implements Env {
         List<LoopRecord> loops = episode.loops();
         LoopRecord thrown = loops.get(loops.size() - 1);
         double reward = task.reward(thrown) + settings.spinShaping().bonus(thrown);
-        if (next == null) {
+        if (next == null || settings.endAtFailedThrow() && !task.success(thrown)) {
             return new Step(stateVector.encode(episode.observe(), task.goal()), reward, true, false);
         }
         state = stateVector.encode(next, task.goal());

@@ -29,15 +29,19 @@ public record TrainConfig(Run run, TrainingConfig learner) {
      *     before there was a choice)
      * @param spinShaping a training-only reward term for the release spin of flips ({@link
      *     SpinShaping}; {@link SpinShaping#NONE}, the paper's reward, when absent)
+     * @param endAtFailedThrow a training episode ends at the first throw that is not a success of
+     *     the task, as an evaluation episode does (false when absent: only a drop ends it)
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
-            double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping) {
+            double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
+            boolean endAtFailedThrow) {
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
-                    j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j));
+                    j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
+                    j.has("endAtFailedThrow") && j.bool("endAtFailedThrow", false));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
@@ -65,6 +69,9 @@ public record TrainConfig(Run run, TrainingConfig learner) {
         runNode.put("state", run.state().label());
         if (run.spinShaping().equals(SpinShaping.NONE)) {
             runNode.remove("spinShaping");
+        }
+        if (!run.endAtFailedThrow()) {
+            runNode.remove("endAtFailedThrow");
         }
         root.set("run", runNode);
         root.setAll(learner.toJson());

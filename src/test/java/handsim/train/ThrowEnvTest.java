@@ -60,6 +60,23 @@ class ThrowEnvTest {
     }
 
     @Test
+    void aCaughtThrowThatMissesItsGoalEndsTheEpisodeOnlyWhenTheRunSaysSo() {
+        for (boolean endAtFailedThrow : new boolean[] {false, true}) {
+            try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+                ThrowEnv env = TestSupport.heightEnvs(cc.throwSpace(), endAtFailedThrow).create(sim);
+                double[] s = env.reset(3);
+                double goal = s[StateVector.Encoding.PAPER.baseSize()];
+                // the nominal throw for a height 0.3 m off the goal: caught (as every nominal throw of the
+                // test above), its apex well outside the height task's success tolerance (configs/tasks/height.json)
+                double aim = goal > 1.3 ? goal - 0.3 : goal + 0.3;
+                Env.Step step = env.step(cc.throwSpace().toAction(cc.nominalThrows().forHeight(aim)));
+                assertTrue(step.reward() > 0 && step.reward() < Math.exp(-10 * 0.2), "caught, far from the goal: " + step.reward());
+                assertEquals(endAtFailedThrow, step.terminal(), "endAtFailedThrow " + endAtFailedThrow);
+            }
+        }
+    }
+
+    @Test
     void aThrowBeyondReachEndsTheEpisodeWithTheMissPenalty() {
         // a box whose largest sideways offset (0.5 m, about 4 m/s) throws the ball far beyond the arm's reach
         ThrowSpace wide = new ThrowSpace(new double[] {-0.5, 0.08, -0.5, -0.1, -0.1, -0.1, 0}, new double[] {0.5, 0.4, 0.5, 0.1, 0.1, 0.1, 0.2});

@@ -128,6 +128,18 @@ class TrainRunTest {
     }
 
     @Test
+    void aRunMayEndItsEpisodesAtTheFirstFailedThrowAndSavesThatOnlyWhenSet() {
+        Path file = Home.resolve("configs/train/flip.json");
+        JsonNode node = Json.load(file).node();
+        TrainConfig plain = TrainConfig.parse(Json.of("plain", node));
+        assertTrue(!plain.run().endAtFailedThrow() && !plain.toJson().get("run").has("endAtFailedThrow"));
+        TrainConfig ending = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), node,
+                Map.of("run.endAtFailedThrow", "true"))));
+        assertTrue(ending.run().endAtFailedThrow());
+        assertEquals(ending, TrainConfig.parse(Json.of("saved", ending.toJson())), "the run folder's config gives it back");
+    }
+
+    @Test
     void aConfigNamesAnUnknownStateEncoding() {
         Path file = Home.resolve("configs/train/height.json");
         ConfigException e = org.junit.jupiter.api.Assertions.assertThrows(ConfigException.class, () -> TrainConfig.parse(
