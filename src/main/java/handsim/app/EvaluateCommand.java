@@ -388,8 +388,11 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */
     private static void putRate(ObjectNode node, String field, List<BoxTests.Test> tests) {
-        if (tests.isEmpty()) node.putNull(field);
-        else node.put(field, BoxTests.successRate(tests));
+        if (tests.isEmpty()) {
+            node.putNull(field);
+        } else {
+            node.put(field, BoxTests.successRate(tests));
+        }
     }
 
     private static String percent(List<BoxTests.Test> tests) {

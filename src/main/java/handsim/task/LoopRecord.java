@@ -35,6 +35,5 @@ import handsim.math.Vec3;
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
         ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, double catchTilt,
-        Vec3 catchPoint,
-        double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
+        Vec3 catchPoint, double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

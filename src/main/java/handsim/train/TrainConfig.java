@@ -41,7 +41,7 @@ public record TrainConfig(Run run, TrainingConfig learner) {
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.has("endAtFailedThrow") && j.bool("endAtFailedThrow", false));
+                    j.bool("endAtFailedThrow", false));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }

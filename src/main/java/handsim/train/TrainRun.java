@@ -126,7 +126,9 @@ public final class TrainRun {
             throw new IllegalArgumentException("--episodes " + episodes + " is below the run's budget of " + before
                     + " episodes: a run can only be extended");
         }
-        if (episodes == before) return old;
+        if (episodes == before) {
+            return old;
+        }
         TrainConfig extended = TrainConfig.parse(Json.of(dir.resolve(CONFIG).toString(), Json.withOverrides(CONFIG,
                 old.toJson(), Map.of("training.episodes", Long.toString(episodes)))));
         ObjectNode record = provenance.deepCopy();

@@ -52,7 +52,11 @@ class CommandsTest {
         // an episode ends one way only: a drop, a catch not lying in the hand, a throw that did not
         // flip, or --loops reached
         long reached = 0;
-        for (JsonNode e : summary.get("episodes")) if (e.get("loops_completed").asInt() >= summary.get("max_loops").asInt()) reached++;
+        for (JsonNode e : summary.get("episodes")) {
+            if (e.get("loops_completed").asInt() >= summary.get("max_loops").asInt()) {
+                reached++;
+            }
+        }
         assertEquals(summary.get("episodes_run").asLong(), summary.get("drops").asLong() + summary.get("tilted_catches").asLong()
                 + summary.get("unflipped_endings").asLong() + reached, summary.toString());
         java.util.List<String> rows = Files.readAllLines(dir.resolve("flip.csv"));
@@ -81,7 +85,9 @@ class CommandsTest {
         for (JsonNode band : summary.get("by_distance")) {
             boolean none = band.get("tests").asInt() == 0;
             assertEquals(none, band.get("success_rate").isNull(), band.toString());
-            if (none) empty++;
+            if (none) {
+                empty++;
+            }
         }
         assertTrue(empty > 0, "one test fills one band at most: " + summary);
         assertTrue(!text.contains("NaN"), text);

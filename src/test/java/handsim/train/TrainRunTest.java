@@ -1,7 +1,5 @@
 package handsim.train;
 
-import com.fasterxml.jackson.databind.JsonNode;
-
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
