@@ -112,7 +112,8 @@ final class EvaluateCommand implements Callable<Integer> {
     Path csv;
 
     @Option(names = "--plot", paramLabel = "FILE",
-            description = "the histogram (height) or success map (box) PNG (default: next to --json, same name with .png)")
+            description = "the histogram (height), success map (box) or loops per episode (flip, with the throws by flight rotation "
+                    + "beside it as NAME-rotation.png) PNG (default: next to --json, same name with .png)")
     Path plot;
 
     @Override
@@ -473,6 +474,15 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("drops", runs.stream().filter(FlipRun::dropped).count());
         out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
         out.put("unflipped_endings", runs.stream().filter(r -> r.unflipped(loops)).count());
+        List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(runs.stream().flatMap(r -> r.loops().stream()).toList());
+        ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
+        for (FlipTask.RotationBin b : bins) {
+            ObjectNode o = byRotation.addObject();
+            o.put("from_deg", Math.toDegrees(b.from()));
+            o.put("to_deg", Math.toDegrees(b.to()));
+            o.put("throws", b.throwsMade());
+            o.put("successes", b.successes());
+        }
         ArrayNode eps = out.putArray("episodes");
         for (FlipRun r : runs) {
             ObjectNode o = eps.addObject();
@@ -498,7 +508,26 @@ final class EvaluateCommand implements Callable<Integer> {
                     controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, handsim.report.Plot.BLUE,
                     handsim.report.Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);
+            Path rotationPlot = plot.resolveSibling(plot.getFileName().toString().replaceFirst("\\.png$", "") + "-rotation.png");
+            plotByRotation(bins, rotationPlot);
+            System.out.println("wrote " + rotationPlot);
         }
+    }
+
+    /** Throws per bin of flight rotation (grey) with the successes among them (blue) drawn over them. */
+    private void plotByRotation(List<FlipTask.RotationBin> bins, Path png) throws IOException {
+        double[] x = new double[bins.size()], made = new double[bins.size()], succeeded = new double[bins.size()];
+        for (int i = 0; i < x.length; i++) {
+            FlipTask.RotationBin b = bins.get(i);
+            x[i] = Math.toDegrees(b.from() + b.to()) / 2;
+            made[i] = b.throwsMade();
+            succeeded[i] = b.successes();
+        }
+        new handsim.report.Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", controller, object),
+                "rotation of the long axis in flight (deg, bin centre)", "throws")
+                .add("throws", x, made, handsim.report.Plot.GREY, handsim.report.Plot.Style.BARS)
+                .add("flipped and caught lying in the hand", x, succeeded, handsim.report.Plot.BLUE, handsim.report.Plot.Style.BARS)
+                .writePng(png);
     }
 
     /** The goals listed under {@code key} in a goals file, each with {@code size} numbers. */

@@ -5,7 +5,9 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -157,6 +159,36 @@ public final class FlipTask implements ThrowTask {
     @Override
     public boolean success(LoopRecord loop) {
         return properCatch(loop) && flips(loop) >= 1;
+    }
+
+    /**
+     * Throws whose object turned between {@code from} and {@code to} in flight (rad), and how
+     * many of them were successes of the task.
+     */
+    public record RotationBin(double from, double to, int throwsMade, int successes) {
+    }
+
+    /**
+     * The throws of {@code loops} (loop 0, the throw-in, and throws without a measured flight
+     * left out) binned by their flight rotation in quarters of the flip angle, from 0 to the
+     * largest, empty bins included: where a policy's throws fall against the window of rotations
+     * that flip and come down lying in the hand.
+     */
+    public List<RotationBin> byFlightRotation(List<LoopRecord> loops) {
+        double width = flip.flipAngle() / 4;
+        List<LoopRecord> thrown = loops.stream().filter(l -> l.index() > 0 && Double.isFinite(l.flightRotation())).toList();
+        int bins = (int) thrown.stream().mapToDouble(l -> Math.max(0, l.flightRotation()) / width).max().orElse(-1) + 1;
+        int[] made = new int[bins], succeeded = new int[bins];
+        for (LoopRecord l : thrown) {
+            int b = (int) (Math.max(0, l.flightRotation()) / width);
+            made[b]++;
+            succeeded[b] += success(l) ? 1 : 0;
+        }
+        List<RotationBin> out = new ArrayList<>();
+        for (int b = 0; b < bins; b++) {
+            out.add(new RotationBin(b * width, (b + 1) * width, made[b], succeeded[b]));
+        }
+        return out;
     }
 
     /** Held in the hand and lying in it: the long axis at most maxCatchTilt out of the palm's plane. */

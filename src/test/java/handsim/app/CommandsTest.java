@@ -70,6 +70,17 @@ class CommandsTest {
         }
         double throwIn = Double.parseDouble(rows.get(1).split(",", -1)[column]);
         assertTrue(throwIn < 30, "the caught throw-in lies in the palm: " + rows.get(1));
+        // the throws binned by flight rotation account for every throw and every success (all
+        // throws after the throw-in have a measured flight: each left the hand), and are drawn next to the JSON
+        int binned = 0, binnedSuccesses = 0;
+        for (JsonNode b : summary.get("throws_by_flight_rotation")) {
+            binned += b.get("throws").asInt();
+            binnedSuccesses += b.get("successes").asInt();
+            assertEquals(45, b.get("to_deg").asDouble() - b.get("from_deg").asDouble(), 1e-9, "a quarter of the can's flip");
+        }
+        assertEquals(summary.get("throws").asInt(), binned, summary.toString());
+        assertEquals(summary.get("loops_completed").asInt(), binnedSuccesses, summary.toString());
+        assertTrue(Files.size(dir.resolve("flip-rotation.png")) > 0);
     }
 
     @Test

@@ -46,6 +46,24 @@ class FlipTaskTest {
     }
 
     @Test
+    void throwsAreBinnedByFlightRotationInQuarterFlips() {
+        // can: quarters of its 180 deg flip, 45 deg wide; the throw-in and a throw with no measured flight are left out
+        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
+                Double.NaN, Double.NaN, null, 0, 0, 0, 1);
+        var bins = can.byFlightRotation(java.util.List.of(throwIn, flight(10, true, target), flight(200, true, target),
+                flight(210, true, target), flight(220, false, target), flight(Double.NaN, true, target)));
+        assertEquals(5, bins.size(), "0-45 up to 180-225, the empty bins between included");
+        assertEquals(Math.toRadians(180), bins.get(4).from(), 1e-12);
+        assertEquals(Math.toRadians(225), bins.get(4).to(), 1e-12);
+        assertEquals(1, bins.get(0).throwsMade());
+        assertEquals(0, bins.get(0).successes(), "10 deg is no flip");
+        assertEquals(0, bins.get(2).throwsMade());
+        assertEquals(3, bins.get(4).throwsMade());
+        assertEquals(2, bins.get(4).successes(), "the dropped one is no success");
+        assertTrue(can.byFlightRotation(java.util.List.of(throwIn)).isEmpty());
+    }
+
+    @Test
     void rewardFollowsEquation7() {
         Vec3 off = target.plus(new Vec3(0.05, 0, 0));
         // flipped and caught 5 cm from p_d: exp(-10 * 0.05) + r_flip
