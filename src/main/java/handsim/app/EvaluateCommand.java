@@ -478,8 +478,8 @@ final class EvaluateCommand implements Callable<Integer> {
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.RotationBin b : bins) {
             ObjectNode o = byRotation.addObject();
-            o.put("from_deg", Math.toDegrees(b.from()));
-            o.put("to_deg", Math.toDegrees(b.to()));
+            o.put("from_deg", roundedDegrees(b.from()));
+            o.put("to_deg", roundedDegrees(b.to()));
             o.put("throws", b.throwsMade());
             o.put("successes", b.successes());
         }
@@ -512,6 +512,11 @@ final class EvaluateCommand implements Callable<Integer> {
             plotByRotation(bins, rotationPlot);
             System.out.println("wrote " + rotationPlot);
         }
+    }
+
+    /** Radians in degrees to 1e-6 (a bin edge of 11 pi / 4 reads 495, not 494.99999999999994). */
+    private static double roundedDegrees(double radians) {
+        return Math.round(Math.toDegrees(radians) * 1e6) / 1e6;
     }
 
     /** Throws per bin of flight rotation (grey) with the successes among them (blue) drawn over them. */
