@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
 import handsim.math.Vec3;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -50,7 +51,7 @@ class FlipTaskTest {
         // can: quarters of its 180 deg flip, 45 deg wide; the throw-in and a throw with no measured flight are left out
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
                 Double.NaN, Double.NaN, null, 0, 0, 0, 1);
-        var bins = can.byFlightRotation(java.util.List.of(throwIn, flight(10, true, target), flight(200, true, target),
+        var bins = can.byFlightRotation(List.of(throwIn, flight(10, true, target), flight(200, true, target),
                 flight(210, true, target), flight(220, false, target), flight(Double.NaN, true, target)));
         assertEquals(5, bins.size(), "0-45 up to 180-225, the empty bins between included");
         assertEquals(Math.toRadians(180), bins.get(4).from(), 1e-12);
@@ -60,7 +61,7 @@ class FlipTaskTest {
         assertEquals(0, bins.get(2).throwsMade());
         assertEquals(3, bins.get(4).throwsMade());
         assertEquals(2, bins.get(4).successes(), "the dropped one is no success");
-        assertTrue(can.byFlightRotation(java.util.List.of(throwIn)).isEmpty());
+        assertTrue(can.byFlightRotation(List.of(throwIn)).isEmpty());
     }
 
     @Test
