@@ -10,6 +10,7 @@ import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
 import handsim.report.Outputs;
+import handsim.report.Plot;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
@@ -504,9 +505,9 @@ final class EvaluateCommand implements Callable<Integer> {
                 x[i] = runs.get(i).seed();
                 y[i] = runs.get(i).inARow();
             }
-            new handsim.report.Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
-                    controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, handsim.report.Plot.BLUE,
-                    handsim.report.Plot.Style.BARS).writePng(plot);
+            new Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
+                    controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
+                    Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);
             Path rotationPlot = plot.resolveSibling(plot.getFileName().toString().replaceFirst("\\.png$", "") + "-rotation.png");
             plotByRotation(bins, rotationPlot);
@@ -528,10 +529,10 @@ final class EvaluateCommand implements Callable<Integer> {
             made[i] = b.throwsMade();
             succeeded[i] = b.successes();
         }
-        new handsim.report.Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", controller, object),
+        new Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", controller, object),
                 "rotation of the long axis in flight (deg, bin centre)", "throws")
-                .add("throws", x, made, handsim.report.Plot.GREY, handsim.report.Plot.Style.BARS)
-                .add("flipped and caught lying in the hand", x, succeeded, handsim.report.Plot.BLUE, handsim.report.Plot.Style.BARS)
+                .add("throws", x, made, Plot.GREY, Plot.Style.BARS)
+                .add("flipped and caught lying in the hand", x, succeeded, Plot.BLUE, Plot.Style.BARS)
                 .writePng(png);
     }
 

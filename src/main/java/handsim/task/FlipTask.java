@@ -6,6 +6,7 @@ import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -177,12 +178,12 @@ public final class FlipTask implements ThrowTask {
     public List<RotationBin> byFlightRotation(List<LoopRecord> loops) {
         double width = flip.flipAngle() / 4;
         List<LoopRecord> thrown = loops.stream().filter(l -> l.index() > 0 && Double.isFinite(l.flightRotation())).toList();
-        int bins = (int) thrown.stream().mapToDouble(l -> Math.max(0, l.flightRotation()) / width).max().orElse(-1) + 1;
+        int[] binOf = thrown.stream().mapToInt(l -> (int) (Math.max(0, l.flightRotation()) / width)).toArray();
+        int bins = Arrays.stream(binOf).max().orElse(-1) + 1;
         int[] made = new int[bins], succeeded = new int[bins];
-        for (LoopRecord l : thrown) {
-            int b = (int) (Math.max(0, l.flightRotation()) / width);
-            made[b]++;
-            succeeded[b] += success(l) ? 1 : 0;
+        for (int i = 0; i < binOf.length; i++) {
+            made[binOf[i]]++;
+            succeeded[binOf[i]] += success(thrown.get(i)) ? 1 : 0;
         }
         List<RotationBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {

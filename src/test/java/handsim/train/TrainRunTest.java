@@ -2,6 +2,8 @@ package handsim.train;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -76,7 +78,7 @@ class TrainRunTest {
             TrainRun.start(whole, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet);
             TrainRun.start(extended, twoEpisodes, envs(), r, Json.mapper().createObjectNode()).run(quiet);
             assertEquals(2, MetricsCsv.read(extended.resolve(TrainRun.METRICS)).size(), "the first run finished at its budget");
-            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                     () -> TrainRun.extend(extended, 1, Json.mapper().createObjectNode()));
             assertTrue(e.getMessage().contains("1") && e.getMessage().contains("2"), e.getMessage());
             TrainRun.extend(extended, 4, Json.mapper().createObjectNode().put("command", "test"));
@@ -116,11 +118,11 @@ class TrainRunTest {
     void setMayGiveAnOptionalFieldTheFileLeavesOutButAMisspeltOneIsNamed() {
         Path file = Home.resolve("configs/train/height.json");
         JsonNode node = Json.load(file).node();
-        assertTrue(!node.get("training").has("criticWarmupDecisions"), "the height run leaves the optional field out");
+        assertFalse(node.get("training").has("criticWarmupDecisions"), "the height run leaves the optional field out");
         TrainConfig c = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), node,
                 Map.of("training.criticWarmupDecisions", "100"))));
         assertEquals(100, c.learner().training().criticWarmupDecisions());
-        ConfigException e = org.junit.jupiter.api.Assertions.assertThrows(ConfigException.class, () -> TrainConfig.parse(
+        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(
                 Json.of("typo", Json.withOverrides(file.toString(), node, Map.of("training.criticWarmupDecisionz", "100")))));
         assertTrue(e.getMessage().contains("criticWarmupDecisionz") && e.getMessage().contains("unknown field"), e.getMessage());
     }
@@ -130,7 +132,8 @@ class TrainRunTest {
         Path file = Home.resolve("configs/train/flip.json");
         JsonNode node = Json.load(file).node();
         TrainConfig plain = TrainConfig.parse(Json.of("plain", node));
-        assertTrue(!plain.run().endAtFailedThrow() && !plain.toJson().get("run").has("endAtFailedThrow"));
+        assertFalse(plain.run().endAtFailedThrow());
+        assertFalse(plain.toJson().get("run").has("endAtFailedThrow"));
         TrainConfig ending = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), node,
                 Map.of("run.endAtFailedThrow", "true"))));
         assertTrue(ending.run().endAtFailedThrow());
@@ -140,7 +143,7 @@ class TrainRunTest {
     @Test
     void aConfigNamesAnUnknownStateEncoding() {
         Path file = Home.resolve("configs/train/height.json");
-        ConfigException e = org.junit.jupiter.api.Assertions.assertThrows(ConfigException.class, () -> TrainConfig.parse(
+        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(
                 Json.of("bad", Json.withOverrides(file.toString(), Json.load(file).node(), Map.of("run.state", "euler")))));
         assertTrue(e.getMessage().contains("state") && e.getMessage().contains("euler"), e.getMessage());
         assertEquals(StateVector.Encoding.PAPER, tinyConfig().run().state(), "the height run keeps the printed state");
