@@ -24,7 +24,7 @@ import org.deeplearning4j.nn.multilayer.MultiLayerNetwork;
 import org.deeplearning4j.util.ModelSerializer;
 
 /**
- * The whole state of a {@link DdpgAgent} in one zip file: the four networks (DL4J
+ * The whole state of a {@link DdpgAgent} in one zip file: the four networks (six with TD3's twin critics; DL4J
  * {@link ModelSerializer}; actor and critic with their Adam state and step counts), the
  * normaliser's statistics, the replay buffer, the replay generator's state and the update
  * count, plus a caller's JSON ({@link Trainer} puts its own counters and generator there).
@@ -34,6 +34,7 @@ import org.deeplearning4j.util.ModelSerializer;
  * <pre>
  * state.json        format, sizes, the ddpg config, updates, replay generator, normaliser, extra
  * actor.zip, critic.zip, actorTarget.zip, criticTarget.zip
+ * critic2.zip, critic2Target.zip   only with TD3's twin critics
  * replay.bin        the filled part of the ring (DataOutputStream, big-endian doubles)
  * </pre>
  */
@@ -72,6 +73,10 @@ public final class Checkpoints {
             put(zip, "critic.zip", networkBytes(agent.critic, true));
             put(zip, "actorTarget.zip", networkBytes(agent.actorTarget, false));
             put(zip, "criticTarget.zip", networkBytes(agent.criticTarget, false));
+            if (agent.critic2 != null) {
+                put(zip, "critic2.zip", networkBytes(agent.critic2, true));
+                put(zip, "critic2Target.zip", networkBytes(agent.critic2Target, false));
+            }
             zip.putNextEntry(new ZipEntry("replay.bin"));
             DataOutputStream data = new DataOutputStream(new BufferedOutputStream(zip, 1 << 16));
             agent.replay.write(data);
@@ -101,10 +106,14 @@ public final class Checkpoints {
                 config.observationMinStd());
         normalizer.restore(norm.numbers("mean", obsSize), norm.numbers("m2", obsSize), norm.longValue("count"));
         norm.requireNoUnknownFields();
+        boolean twin = config.td3().twinCritics();
         ReplayBuffer replay = ReplayBuffer.read(new DataInputStream(new ByteArrayInputStream(entry(entries, file, "replay.bin"))));
         DdpgAgent agent = new DdpgAgent(config, obsSize, actionSize, network(entries, file, "actor.zip", true),
                 network(entries, file, "critic.zip", true), network(entries, file, "actorTarget.zip", false),
-                network(entries, file, "criticTarget.zip", false), normalizer, replay, new Rng(state.longValue("replayRng")));
+                network(entries, file, "criticTarget.zip", false),
+                twin ? network(entries, file, "critic2.zip", true) : null,
+                twin ? network(entries, file, "critic2Target.zip", false) : null,
+                normalizer, replay, new Rng(state.longValue("replayRng")));
         agent.updates = state.longValue("updates");
         JsonNode extra = state.node().get("extra");
         state.allow("extra");

@@ -7,13 +7,15 @@ import org.nd4j.linalg.activations.Activation;
 import org.nd4j.linalg.api.ndarray.INDArray;
 import org.nd4j.linalg.factory.Nd4j;
 import org.nd4j.linalg.indexing.NDArrayIndex;
+import org.nd4j.linalg.ops.transforms.Transforms;
 
 /**
  * Deep deterministic policy gradient (Lillicrap et al. 2015, Alg. 1), the learner of paper
  * sec. 3.7: an actor mu(s) in [-1, 1]^k (tanh output), a critic Q(s, a) (linear output, input
  * the observation and action side by side), slowly tracking target copies of both, a replay
- * buffer and an observation normaliser. Not thread-safe: one training thread owns the agent;
- * rollout workers use {@link #policy} snapshots.
+ * buffer and an observation normaliser; optionally with TD3's twin critics, delayed policy
+ * updates and target policy smoothing ({@link TrainingConfig.Td3}). Not thread-safe: one
+ * training thread owns the agent; rollout workers use {@link #policy} snapshots.
  */
 public final class DdpgAgent {
 
@@ -28,6 +30,9 @@ public final class DdpgAgent {
     final MultiLayerNetwork critic;
     final MultiLayerNetwork actorTarget;
     final MultiLayerNetwork criticTarget;
+    /** TD3's second critic and its target ({@code td3.twinCritics}), else null. */
+    final MultiLayerNetwork critic2;
+    final MultiLayerNetwork critic2Target;
     final Normalizer normalizer;
     final ReplayBuffer replay;
     final Rng replayRng;
@@ -36,23 +41,35 @@ public final class DdpgAgent {
     /**
      * A fresh agent: random networks, targets equal to them, empty replay and statistics.
      * Seeding: {@code seed} starts a generator whose first draw seeds the actor's weight
-     * initialisation, the second the critic's, the third the replay sampling.
+     * initialisation, the second the critic's, the third the replay sampling (and TD3's target
+     * noise), the fourth TD3's second critic.
      */
     public static DdpgAgent create(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
         Rng seeds = new Rng(seed);
         MultiLayerNetwork actor = Networks.mlp(obsSize, c.actorHidden(), actionSize, Activation.TANH, c.actorLr(),
                 c.actorL2(), c, seeds.nextLong());
-        MultiLayerNetwork critic = Networks.mlp(obsSize + actionSize, c.criticHidden(), 1, Activation.IDENTITY,
-                c.criticLr(), c.criticL2(), c, seeds.nextLong());
-        return new DdpgAgent(c, obsSize, actionSize, actor, critic, actor.clone(), critic.clone(),
+        MultiLayerNetwork critic = critic(c, obsSize, actionSize, seeds.nextLong());
+        Rng replayRng = new Rng(seeds.nextLong());
+        MultiLayerNetwork critic2 = c.td3().twinCritics() ? critic(c, obsSize, actionSize, seeds.nextLong()) : null;
+        return new DdpgAgent(c, obsSize, actionSize, actor, critic, actor.clone(), critic.clone(), critic2,
+                critic2 == null ? null : critic2.clone(),
                 new Normalizer(obsSize, c.normalizeObservations(), c.observationClip(), c.observationMinStd()),
-                new ReplayBuffer(c.replayCapacity(), obsSize, actionSize), new Rng(seeds.nextLong()));
+                new ReplayBuffer(c.replayCapacity(), obsSize, actionSize), replayRng);
+    }
+
+    private static MultiLayerNetwork critic(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+        return Networks.mlp(obsSize + actionSize, c.criticHidden(), 1, Activation.IDENTITY, c.criticLr(), c.criticL2(),
+                c, seed);
     }
 
     /** All parts given ({@link #create}, checkpoint loading). */
     DdpgAgent(TrainingConfig.Ddpg config, int obsSize, int actionSize, MultiLayerNetwork actor, MultiLayerNetwork critic,
-            MultiLayerNetwork actorTarget, MultiLayerNetwork criticTarget, Normalizer normalizer, ReplayBuffer replay,
-            Rng replayRng) {
+            MultiLayerNetwork actorTarget, MultiLayerNetwork criticTarget, MultiLayerNetwork critic2,
+            MultiLayerNetwork critic2Target, Normalizer normalizer, ReplayBuffer replay, Rng replayRng) {
+        if ((critic2 != null) != config.td3().twinCritics() || (critic2 == null) != (critic2Target == null)) {
+            throw new IllegalArgumentException("td3.twinCritics is " + config.td3().twinCritics()
+                    + " but the second critic and its target are " + (critic2 == null ? "absent" : "present"));
+        }
         this.config = config;
         this.obsSize = obsSize;
         this.actionSize = actionSize;
@@ -60,6 +77,8 @@ public final class DdpgAgent {
         this.critic = critic;
         this.actorTarget = actorTarget;
         this.criticTarget = criticTarget;
+        this.critic2 = critic2;
+        this.critic2Target = critic2Target;
         this.normalizer = normalizer;
         this.replay = replay;
         this.replayRng = replayRng;
@@ -140,7 +159,10 @@ public final class DdpgAgent {
         return replay.size() >= config.batchSize();
     }
 
-    /** One DDPG update on a batch drawn from the replay buffer (Alg. 1, inner loop). */
+    /**
+     * One DDPG update on a batch drawn from the replay buffer (Alg. 1, inner loop); with TD3's
+     * {@code policyDelay} d, the actor and the targets learn on every d-th update only.
+     */
     public Losses update() {
         return update(true);
     }
@@ -157,14 +179,15 @@ public final class DdpgAgent {
         INDArray a = Networks.matrix(b.actions(), n, actionSize);
         INDArray y = Networks.matrix(tdTargets(b), n, 1);
 
-        // critic: minimise mean (Q(s, a) - y)^2
-        INDArray q = Networks.forwardForBackprop(critic, Nd4j.hstack(s, a));
-        INDArray err = q.sub(y);
-        double criticLoss = err.mul(err).meanNumber().doubleValue();
-        Networks.descend(critic, err.muli(2));
+        // critic (and TD3's second): minimise mean (Q(s, a) - y)^2
+        double criticLoss = descendTdError(critic, Nd4j.hstack(s, a), y);
+        if (critic2 != null) {
+            descendTdError(critic2, Nd4j.hstack(s, a), y);
+        }
 
+        boolean delayedStep = updates % config.td3().policyDelay() == 0;
         double actorLoss;
-        if (updateActor) {
+        if (updateActor && delayedStep) {
             // actor: maximise Q(s, mu(s)), following dQ/da back through the actor (deterministic policy gradient)
             INDArray mu = Networks.forwardForBackprop(actor, s);
             INDArray qMu = Networks.forwardForBackprop(critic, Nd4j.hstack(s, mu));
@@ -176,19 +199,47 @@ public final class DdpgAgent {
         } else {
             actorLoss = -critic.output(Nd4j.hstack(s, actor.output(s, false)), false).meanNumber().doubleValue();
         }
-        Networks.softUpdate(criticTarget, critic, config.tau());
+        if (delayedStep) {
+            Networks.softUpdate(criticTarget, critic, config.tau());
+            if (critic2 != null) {
+                Networks.softUpdate(critic2Target, critic2, config.tau());
+            }
+        }
         updates++;
         return new Losses(criticLoss, actorLoss);
     }
 
+    /** One step of {@code net} on mean (net(input) - y)^2; returns that loss before the step. */
+    private static double descendTdError(MultiLayerNetwork net, INDArray input, INDArray y) {
+        INDArray err = Networks.forwardForBackprop(net, input).sub(y);
+        double loss = err.mul(err).meanNumber().doubleValue();
+        Networks.descend(net, err.muli(2));
+        return loss;
+    }
+
     /**
      * TD targets y = r + gamma (1 - terminal) Q'(s', mu'(s')) with the target networks. A
-     * truncated step is not terminal: it bootstraps from s' like any other.
+     * truncated step is not terminal: it bootstraps from s' like any other. With TD3, mu'(s')
+     * gets clipped Gaussian noise (then clipped to [-1, 1]) and Q' is the smaller of the two
+     * target critics (Fujimoto et al. 2018, eq. 14-15).
      */
     double[] tdTargets(ReplayBuffer.Batch b) {
         int n = b.size();
         INDArray s2 = normalized(b.nextObs(), n);
-        INDArray q2 = criticTarget.output(Nd4j.hstack(s2, actorTarget.output(s2, false)), false);
+        INDArray a2 = actorTarget.output(s2, false);
+        TrainingConfig.Td3 td3 = config.td3();
+        if (td3.targetNoise() > 0) {
+            double[] noisy = Networks.rowMajor(a2);
+            for (int i = 0; i < noisy.length; i++) {
+                double eps = Normalizer.clip(td3.targetNoise() * replayRng.nextGaussian(), td3.targetNoiseClip());
+                noisy[i] = Normalizer.clip(noisy[i] + eps, 1);
+            }
+            a2 = Networks.matrix(noisy, n, actionSize);
+        }
+        INDArray q2 = criticTarget.output(Nd4j.hstack(s2, a2), false);
+        if (critic2Target != null) {
+            q2 = Transforms.min(q2, critic2Target.output(Nd4j.hstack(s2, a2), false));
+        }
         double[] y = new double[n];
         for (int i = 0; i < n; i++) {
             y[i] = b.rewards()[i] + (b.terminal()[i] ? 0 : config.gamma() * q2.getDouble(i, 0));

@@ -66,7 +66,7 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
     public record Ddpg(List<Integer> actorHidden, List<Integer> criticHidden, double finalLayerInit, double actorLr, double criticLr,
             double adamBeta1, double adamBeta2, double adamEpsilon, double actorL2, double criticL2,
             double gradientClip, double gamma, double tau, int batchSize, int replayCapacity,
-            boolean normalizeObservations, double observationClip, double observationMinStd) {
+            boolean normalizeObservations, double observationClip, double observationMinStd, Td3 td3) {
 
         public Ddpg {
             actorHidden = List.copyOf(actorHidden);
@@ -82,12 +82,39 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
                     j.number("gradientClip", 0, 1e9), j.number("gamma", 0, 1), j.number("tau", 1e-9, 1),
                     j.integer("batchSize", 1, 1 << 16), j.integer("replayCapacity", 1, 100_000_000),
                     requiredBool(j, "normalizeObservations"), j.number("observationClip", 1e-3, 1e6),
-                    j.number("observationMinStd", 1e-12, 1e6));
+                    j.number("observationMinStd", 1e-12, 1e6), j.has("td3") ? Td3.parse(j.get("td3")) : Td3.OFF);
             if (d.replayCapacity < d.batchSize) {
                 throw j.fieldError("replayCapacity", "must be >= batchSize (" + d.batchSize + "), got " + d.replayCapacity);
             }
             j.requireNoUnknownFields();
             return d;
+        }
+    }
+
+    /**
+     * TD3's three changes to DDPG (Fujimoto, van Hoof and Meger 2018, "Addressing function
+     * approximation error in actor-critic methods", Alg. 1), each off by default; a config
+     * without a {@code td3} block is plain DDPG.
+     *
+     * @param twinCritics two critics learn the same TD targets, and the targets take the smaller
+     *     of their two target networks' estimates (clipped double Q-learning)
+     * @param policyDelay the actor and all target networks learn on one update in this many
+     *     (delayed policy updates; 1 = every update, as DDPG)
+     * @param targetNoise standard deviation of the Gaussian noise added to the target actor's
+     *     action in the TD target, in units of the [-1, 1] action range (target policy smoothing)
+     * @param targetNoiseClip that noise is clipped to plus or minus this
+     */
+    public record Td3(boolean twinCritics, int policyDelay, double targetNoise, double targetNoiseClip) {
+
+        /** Plain DDPG. */
+        public static final Td3 OFF = new Td3(false, 1, 0, 0);
+
+        static Td3 parse(Json j) {
+            j.allow("comment");
+            Td3 t = new Td3(requiredBool(j, "twinCritics"), j.integer("policyDelay", 1, 1000),
+                    j.number("targetNoise", 0, 10), j.number("targetNoiseClip", 0, 10));
+            j.requireNoUnknownFields();
+            return t;
         }
     }
 

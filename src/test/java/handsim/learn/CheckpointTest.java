@@ -17,22 +17,35 @@ import org.junit.jupiter.api.io.TempDir;
 class CheckpointTest {
 
     /** A short run that updates from its second episode on. */
-    private static TrainingConfig config() {
-        return LearnTestSupport.config("seed", "7", "ddpg.batchSize", "16", "exploration.warmupSteps", "20",
+    private static TrainingConfig config(String... more) {
+        List<String> kv = new ArrayList<>(List.of("seed", "7", "ddpg.batchSize", "16", "exploration.warmupSteps", "20",
                 "exploration.noise", "\"ou\"", "exploration.sigmaDecaySteps", "100", "training.episodes", "8",
-                "training.movingAverageWindow", "3", "training.checkpointEveryEpisodes", "4");
+                "training.movingAverageWindow", "3", "training.checkpointEveryEpisodes", "4"));
+        kv.addAll(List.of(more));
+        return LearnTestSupport.config(kv.toArray(String[]::new));
     }
 
     @Test
     void resumedRunContinuesExactlyAsTheUninterruptedOne(@TempDir Path dir) throws IOException {
+        resumesExactly(dir, config());
+    }
+
+    /** The same with TD3: the second critic, its target and the target noise's generator are saved too. */
+    @Test
+    void resumedTd3RunContinuesExactlyAsTheUninterruptedOne(@TempDir Path dir) throws IOException {
+        resumesExactly(dir, config("ddpg.td3",
+                "{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}"));
+    }
+
+    private static void resumesExactly(Path dir, TrainingConfig config) throws IOException {
         Env env = new ToyEnvs.GoalReaching(5);
         Path ckpt = dir.resolve("checkpoint.zip");
 
         // uninterrupted: 8 episodes; the checkpoint is written after episode 4 (and 8)
         List<EpisodeStats> straight = new ArrayList<>();
-        Trainer a = Trainer.create(config(), 4, 3);
+        Trainer a = Trainer.create(config, 4, 3);
         a.train(List.of(env), null, straight::add, null);
-        Trainer b = Trainer.create(config(), 4, 3);
+        Trainer b = Trainer.create(config, 4, 3);
         for (int e = 0; e < 4; e++) {
             b.runEpisode(env, s -> { });
         }

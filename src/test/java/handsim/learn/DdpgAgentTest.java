@@ -102,6 +102,86 @@ class DdpgAgentTest {
         assertEquals(32, agent.actor.layerSize(0));
     }
 
+    /** A TD3 agent (batch 16) with the given td3 block, after {@link PolicyTest#trainedAgent}'s 20 updates. */
+    private static DdpgAgent td3Agent(String td3, long seed) {
+        return PolicyTest.trainedAgent(LearnTestSupport.config("ddpg.batchSize", "16", "ddpg.td3", td3).ddpg(), 3, 2, seed);
+    }
+
+    @Test
+    void twinCriticsBootstrapFromTheSmallerTargetEstimate() {
+        DdpgAgent agent = td3Agent("{\"twinCritics\": true, \"policyDelay\": 1, \"targetNoise\": 0, \"targetNoiseClip\": 0.5}", 15);
+        double gamma = agent.config().gamma();
+        Rng rng = new Rng(3);
+        int n = 8;
+        double[] s2 = new double[3 * n];
+        for (int i = 0; i < s2.length; i++) {
+            s2[i] = 1 + 3 * rng.nextGaussian();
+        }
+        ReplayBuffer.Batch b = new ReplayBuffer.Batch(n, new double[3 * n], new double[2 * n], new double[n], s2, new boolean[n]);
+        double[] y = agent.tdTargets(b);
+        // both target critics at (s', mu'(s')), computed independently: y takes the smaller (TD3, eq. 15)
+        INDArray s2n = Networks.matrix(agent.normalizer.normalize(s2), n, 3);
+        INDArray in = Nd4j.hstack(s2n, agent.actorTarget.output(s2n, false));
+        int fromSecond = 0;
+        for (int i = 0; i < n; i++) {
+            double q1 = agent.criticTarget.output(in, false).getDouble(i, 0);
+            double q2 = agent.critic2Target.output(in, false).getDouble(i, 0);
+            assertEquals(gamma * Math.min(q1, q2), y[i], 1e-12, "row " + i);
+            fromSecond += q2 < q1 ? 1 : 0;
+        }
+        // two independently initialised critics disagree: some rows must come from each, or the check checks nothing
+        assertTrue(fromSecond > 0 && fromSecond < n, fromSecond + " of " + n + " targets from the second critic");
+    }
+
+    @Test
+    void delayedPolicyUpdatesMoveTheActorAndTargetsEveryOtherUpdate() {
+        DdpgAgent agent = td3Agent("{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}", 16);
+        assertEquals(20, agent.updates(), "trainedAgent made an even number of updates: the next one is not a policy step");
+        double[] actor = Networks.rowMajor(agent.actor.params());
+        double[] targets = concat(Networks.rowMajor(agent.actorTarget.params()),
+                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params())));
+        double[] critics = concat(Networks.rowMajor(agent.critic.params()), Networks.rowMajor(agent.critic2.params()));
+        agent.update(); // update 21 (index 20, even): the actor and the targets learn
+        assertFalse(Arrays.equals(actor, Networks.rowMajor(agent.actor.params())), "policy step: the actor moved");
+        double[] actor2 = Networks.rowMajor(agent.actor.params());
+        double[] targets2 = concat(Networks.rowMajor(agent.actorTarget.params()),
+                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params())));
+        assertFalse(Arrays.equals(targets, targets2), "policy step: the targets moved");
+        agent.update(); // index 21, odd: only the two critics learn
+        assertArrayEquals(actor2, Networks.rowMajor(agent.actor.params()), 0.0, "no policy step: the actor stays");
+        assertArrayEquals(targets2, concat(Networks.rowMajor(agent.actorTarget.params()),
+                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params()))), 0.0,
+                "no policy step: the targets stay");
+        double[] critics3 = concat(Networks.rowMajor(agent.critic.params()), Networks.rowMajor(agent.critic2.params()));
+        assertFalse(Arrays.equals(critics, critics3), "the critics learn on every update");
+    }
+
+    @Test
+    void targetPolicyNoiseIsClipped() {
+        String noisy = "{\"twinCritics\": false, \"policyDelay\": 1, \"targetNoise\": 0.3, \"targetNoiseClip\": %s}";
+        double[] s2 = {0.4, -1.2, 2.0, 1.5, 0.3, -0.7};
+        ReplayBuffer.Batch b = new ReplayBuffer.Batch(2, new double[6], new double[4], new double[2], s2, new boolean[2]);
+        // clipped to 0 the noise vanishes: the targets are DDPG's gamma Q'(s', mu'(s')) (rewards 0 here)
+        DdpgAgent clippedAway = td3Agent(String.format(noisy, "0"), 17);
+        assertArrayEquals(noiselessTargets(clippedAway, s2), clippedAway.tdTargets(b), 1e-12);
+        DdpgAgent withNoise = td3Agent(String.format(noisy, "0.5"), 17);
+        double[] clean = noiselessTargets(withNoise, s2), y = withNoise.tdTargets(b);
+        assertTrue(Math.abs(clean[0] - y[0]) > 1e-9 || Math.abs(clean[1] - y[1]) > 1e-9,
+                "noise up to 0.5 of the action range changes the targets");
+    }
+
+    /** gamma Q'(s', mu'(s')) for each row of {@code s2}, from the target networks directly. */
+    private static double[] noiselessTargets(DdpgAgent agent, double[] s2) {
+        int n = s2.length / agent.observationSize();
+        INDArray s2n = Networks.matrix(agent.normalizer.normalize(s2), n, agent.observationSize());
+        INDArray q = agent.criticTarget.output(Nd4j.hstack(s2n, agent.actorTarget.output(s2n, false)), false);
+        double[] y = Networks.rowMajor(q);
+        for (int i = 0; i < n; i++) {
+            y[i] *= agent.config().gamma();
+        }
+        return y;
+    }
+
     private static double[] params(DdpgAgent a) {
         return concat(concat(Networks.rowMajor(a.actor.params()), Networks.rowMajor(a.critic.params())),
                 concat(Networks.rowMajor(a.actorTarget.params()), Networks.rowMajor(a.criticTarget.params())));

@@ -21,7 +21,12 @@ class PolicyTest {
 
     /** An agent whose actor has moved off its initialisation and whose normaliser has statistics. */
     static DdpgAgent trainedAgent(int obsSize, int actionSize, long seed) {
-        DdpgAgent agent = DdpgAgent.create(LearnTestSupport.config("ddpg.batchSize", "16").ddpg(), obsSize, actionSize, seed);
+        return trainedAgent(LearnTestSupport.config("ddpg.batchSize", "16").ddpg(), obsSize, actionSize, seed);
+    }
+
+    /** An agent of config {@code c} after 20 updates on 64 random transitions. */
+    static DdpgAgent trainedAgent(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+        DdpgAgent agent = DdpgAgent.create(c, obsSize, actionSize, seed);
         Rng rng = new Rng(seed);
         for (int i = 0; i < 64; i++) {
             double[] s = gaussian(rng, obsSize, 3), s2 = gaussian(rng, obsSize, 3), a = gaussian(rng, actionSize, 0.5);

@@ -15,6 +15,11 @@ class TrainingConfigTest {
         TrainingConfig c = LearnTestSupport.config();
         assertEquals(java.util.List.of(64, 64), c.ddpg().actorHidden(), "paper sec. 3.7: two layers of 64");
         assertEquals(c, TrainingConfig.parse(Json.of("round trip", c.toJson())));
+        assertEquals(TrainingConfig.Td3.OFF, c.ddpg().td3(), "no td3 block: plain DDPG");
+        TrainingConfig t = LearnTestSupport.config("ddpg.td3",
+                "{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}");
+        assertEquals(new TrainingConfig.Td3(true, 2, 0.2, 0.5), t.ddpg().td3());
+        assertEquals(t, TrainingConfig.parse(Json.of("round trip", t.toJson())));
     }
 
     @Test
@@ -25,6 +30,9 @@ class TrainingConfigTest {
         assertTrue(e.getMessage().contains("exploration.noise") && e.getMessage().contains("pink"), e.getMessage());
         e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.actorHidden", "[64, 0.5]"));
         assertTrue(e.getMessage().contains("ddpg.actorHidden") && e.getMessage().contains("0.5"), e.getMessage());
+        e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.td3",
+                "{\"twinCritics\": true, \"policyDelay\": 0, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}"));
+        assertTrue(e.getMessage().contains("ddpg.td3.policyDelay") && e.getMessage().contains("0"), e.getMessage());
         e = assertThrows(ConfigException.class, () -> LearnTestSupport.config("ddpg.replayCapacity", "10"));
         assertTrue(e.getMessage().contains("ddpg.replayCapacity") && e.getMessage().contains("batchSize"), e.getMessage());
     }
