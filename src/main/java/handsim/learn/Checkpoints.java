@@ -24,10 +24,10 @@ import org.deeplearning4j.nn.multilayer.MultiLayerNetwork;
 import org.deeplearning4j.util.ModelSerializer;
 
 /**
- * The whole state of a {@link DdpgAgent} in one zip file: the four networks (six with TD3's twin critics; DL4J
- * {@link ModelSerializer}; actor and critic with their Adam state and step counts), the
- * normaliser's statistics, the replay buffer, the replay generator's state and the update
- * count, plus a caller's JSON ({@link Trainer} puts its own counters and generator there).
+ * The whole state of a {@link DdpgAgent} in one zip file: the four networks, six with TD3's
+ * twin critics (DL4J {@link ModelSerializer}; actor and critics with their Adam state and step
+ * counts), the normaliser's statistics, the replay buffer, the replay generator's state and the
+ * update count, plus a caller's JSON ({@link Trainer} puts its own counters and generator there).
  * Written atomically ({@link AtomicFiles}): a run killed while saving keeps its previous
  * checkpoint. After loading, the agent acts and learns exactly as the saved one would have.
  *

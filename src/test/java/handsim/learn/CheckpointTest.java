@@ -30,7 +30,7 @@ class CheckpointTest {
         resumesExactly(dir, config());
     }
 
-    /** The same with TD3: the second critic, its target and the target noise's generator are saved too. */
+    /** The same with TD3: the second critic and its target are saved too (the target noise draws from the saved replay generator). */
     @Test
     void resumedTd3RunContinuesExactlyAsTheUninterruptedOne(@TempDir Path dir) throws IOException {
         resumesExactly(dir, config("ddpg.td3",
