@@ -180,9 +180,10 @@ public final class DdpgAgent {
         INDArray y = Networks.matrix(tdTargets(b), n, 1);
 
         // critic (and TD3's second): minimise mean (Q(s, a) - y)^2
-        double criticLoss = descendTdError(critic, Nd4j.hstack(s, a), y);
+        INDArray sa = Nd4j.hstack(s, a);
+        double criticLoss = descendTdError(critic, sa, y);
         if (critic2 != null) {
-            descendTdError(critic2, Nd4j.hstack(s, a), y);
+            descendTdError(critic2, sa, y);
         }
 
         boolean delayedStep = updates % config.td3().policyDelay() == 0;
@@ -236,9 +237,10 @@ public final class DdpgAgent {
             }
             a2 = Networks.matrix(noisy, n, actionSize);
         }
-        INDArray q2 = criticTarget.output(Nd4j.hstack(s2, a2), false);
+        INDArray s2a2 = Nd4j.hstack(s2, a2);
+        INDArray q2 = criticTarget.output(s2a2, false);
         if (critic2Target != null) {
-            q2 = Transforms.min(q2, critic2Target.output(Nd4j.hstack(s2, a2), false));
+            q2 = Transforms.min(q2, critic2Target.output(s2a2, false));
         }
         double[] y = new double[n];
         for (int i = 0; i < n; i++) {

@@ -32,9 +32,16 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
         return c;
     }
 
-    /** This configuration in the file's format: {@code parse(toJson())} gives it back. */
+    /**
+     * This configuration in the file's format: {@code parse(toJson())} gives it back. Plain DDPG
+     * writes no {@code td3} block, as its config files have none.
+     */
     public ObjectNode toJson() {
-        return Json.mapper().valueToTree(this);
+        ObjectNode node = Json.mapper().valueToTree(this);
+        if (ddpg.td3().equals(Td3.OFF)) {
+            ((ObjectNode) node.get("ddpg")).remove("td3");
+        }
+        return node;
     }
 
     public TrainingConfig withSeed(long newSeed) {

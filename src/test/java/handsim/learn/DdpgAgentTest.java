@@ -122,10 +122,11 @@ class DdpgAgentTest {
         // both target critics at (s', mu'(s')), computed independently: y takes the smaller (TD3, eq. 15)
         INDArray s2n = Networks.matrix(agent.normalizer.normalize(s2), n, 3);
         INDArray in = Nd4j.hstack(s2n, agent.actorTarget.output(s2n, false));
+        double[] q1s = Networks.rowMajor(agent.criticTarget.output(in, false));
+        double[] q2s = Networks.rowMajor(agent.critic2Target.output(in, false));
         int fromSecond = 0;
         for (int i = 0; i < n; i++) {
-            double q1 = agent.criticTarget.output(in, false).getDouble(i, 0);
-            double q2 = agent.critic2Target.output(in, false).getDouble(i, 0);
+            double q1 = q1s[i], q2 = q2s[i];
             assertEquals(gamma * Math.min(q1, q2), y[i], 1e-12, "row " + i);
             fromSecond += q2 < q1 ? 1 : 0;
         }
@@ -138,20 +139,16 @@ class DdpgAgentTest {
         DdpgAgent agent = td3Agent("{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}", 16);
         assertEquals(20, agent.updates(), "trainedAgent made an even number of updates: the next one is not a policy step");
         double[] actor = Networks.rowMajor(agent.actor.params());
-        double[] targets = concat(Networks.rowMajor(agent.actorTarget.params()),
-                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params())));
+        double[] targets = targetParams(agent);
         double[] critics = concat(Networks.rowMajor(agent.critic.params()), Networks.rowMajor(agent.critic2.params()));
         agent.update(); // update 21 (index 20, even): the actor and the targets learn
         assertFalse(Arrays.equals(actor, Networks.rowMajor(agent.actor.params())), "policy step: the actor moved");
         double[] actor2 = Networks.rowMajor(agent.actor.params());
-        double[] targets2 = concat(Networks.rowMajor(agent.actorTarget.params()),
-                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params())));
+        double[] targets2 = targetParams(agent);
         assertFalse(Arrays.equals(targets, targets2), "policy step: the targets moved");
         agent.update(); // index 21, odd: only the two critics learn
         assertArrayEquals(actor2, Networks.rowMajor(agent.actor.params()), 0.0, "no policy step: the actor stays");
-        assertArrayEquals(targets2, concat(Networks.rowMajor(agent.actorTarget.params()),
-                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params()))), 0.0,
-                "no policy step: the targets stay");
+        assertArrayEquals(targets2, targetParams(agent), 0.0, "no policy step: the targets stay");
         double[] critics3 = concat(Networks.rowMajor(agent.critic.params()), Networks.rowMajor(agent.critic2.params()));
         assertFalse(Arrays.equals(critics, critics3), "the critics learn on every update");
     }
@@ -168,6 +165,12 @@ class DdpgAgentTest {
         double[] clean = noiselessTargets(withNoise, s2), y = withNoise.tdTargets(b);
         assertTrue(Math.abs(clean[0] - y[0]) > 1e-9 || Math.abs(clean[1] - y[1]) > 1e-9,
                 "noise up to 0.5 of the action range changes the targets");
+    }
+
+    /** The parameters of a TD3 agent's three target networks, one after the other. */
+    private static double[] targetParams(DdpgAgent agent) {
+        return concat(Networks.rowMajor(agent.actorTarget.params()),
+                concat(Networks.rowMajor(agent.criticTarget.params()), Networks.rowMajor(agent.critic2Target.params())));
     }
 
     /** gamma Q'(s', mu'(s')) for each row of {@code s2}, from the target networks directly. */

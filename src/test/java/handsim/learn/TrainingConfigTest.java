@@ -16,6 +16,7 @@ class TrainingConfigTest {
         assertEquals(java.util.List.of(64, 64), c.ddpg().actorHidden(), "paper sec. 3.7: two layers of 64");
         assertEquals(c, TrainingConfig.parse(Json.of("round trip", c.toJson())));
         assertEquals(TrainingConfig.Td3.OFF, c.ddpg().td3(), "no td3 block: plain DDPG");
+        assertTrue(!c.toJson().get("ddpg").has("td3"), "and plain DDPG writes none back");
         TrainingConfig t = LearnTestSupport.config("ddpg.td3",
                 "{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}");
         assertEquals(new TrainingConfig.Td3(true, 2, 0.2, 0.5), t.ddpg().td3());
