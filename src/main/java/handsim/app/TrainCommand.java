@@ -15,6 +15,7 @@ import handsim.train.ThrowEnvs;
 import handsim.train.TrainConfig;
 import handsim.train.TrainRun;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.util.LinkedHashMap;
@@ -33,6 +34,13 @@ import picocli.CommandLine.Option;
                 + "with config.json, run.json, metrics.csv, checkpoint.zip, learning.png, losses.png and policy.json; "
                 + "a run killed at any moment continues with --resume.")
 final class TrainCommand implements Callable<Integer> {
+
+    /**
+     * When set, the file {@code train} writes its run folder's path to as soon as the folder
+     * exists: the launcher ({@code scripts/handsim}) reads it to resume the run after the JVM
+     * dies in native code.
+     */
+    static final String RUN_DIR_FILE_PROPERTY = "handsim.runDirFile";
 
     @Option(names = "--config", paramLabel = "FILE", description = "training config, e.g. configs/train/height.json")
     Path config;
@@ -87,9 +95,18 @@ final class TrainCommand implements Callable<Integer> {
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
             TrainRun run = resume != null ? TrainRun.resume(resume, envs, rollouts)
                     : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c), initActor);
+            tellLauncher(run.dir());
             run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
         return 0;
+    }
+
+    /** Writes the run folder's absolute path to the file named by {@link #RUN_DIR_FILE_PROPERTY}, if any. */
+    private static void tellLauncher(Path dir) throws IOException {
+        String file = System.getProperty(RUN_DIR_FILE_PROPERTY);
+        if (file != null) {
+            Files.writeString(Path.of(file), dir.toAbsolutePath().toString());
+        }
     }
 
     /** The config file with the {@code --set} overrides applied, validated. */

@@ -128,6 +128,28 @@ class CommandsTest {
     }
 
     @Test
+    void trainTellsTheLauncherItsRunFolder(@TempDir Path dir) throws Exception {
+        // scripts/handsim resumes a run whose JVM crashed from the folder train wrote to this file
+        Path told = dir.resolve("run-dir.txt");
+        PrintStream stdout = System.out;
+        int code;
+        System.setProperty(TrainCommand.RUN_DIR_FILE_PROPERTY, told.toString());
+        try {
+            System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+            code = Main.run("train", "--config", "configs/train/height.json", "--runs", dir.resolve("runs").toString(),
+                    "--set", "training.episodes=1", "--set", "training.parallelEpisodes=1", "--set", "run.workers=1",
+                    "--set", "training.maxDecisionsPerEpisode=1");
+        } finally {
+            System.setOut(stdout);
+            System.clearProperty(TrainCommand.RUN_DIR_FILE_PROPERTY);
+        }
+        assertEquals(0, code);
+        Path run = Path.of(Files.readString(told));
+        assertTrue(run.isAbsolute() && run.startsWith(dir.resolve("runs").toAbsolutePath()), run.toString());
+        assertTrue(Files.isRegularFile(run.resolve("policy.json")), "the folder named is the run's: " + run);
+    }
+
+    @Test
     void curvesOverlaysRunsAndNamesAFolderThatIsNotARun(@TempDir Path dir) throws Exception {
         for (String run : new String[] {"cold", "warm"}) {
             Files.createDirectories(dir.resolve(run));
