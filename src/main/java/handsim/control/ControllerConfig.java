@@ -2,6 +2,7 @@ package handsim.control;
 
 import handsim.config.Json;
 import java.nio.file.Path;
+import java.util.Optional;
 
 /**
  * Everything tunable of the nominal controller, from {@code configs/controller.json}. The
@@ -29,13 +30,15 @@ import java.nio.file.Path;
  *     bounced off something
  * @param fallingTilt how far the palm may tilt from facing a long object that falls straight
  *     down, to lie flat under its axis (rad); more for objects arriving from the side
+ * @param release when present, THROW ends when the object would turn far enough in flight
+ *     instead of after {@code throwDuration}; a task sets it ({@link #withRelease})
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
         double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
         double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
         Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations,
-        double replanSpeedChange, double fallingTilt) {
+        double replanSpeedChange, double fallingTilt, Optional<ClosedLoopRelease> release) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -75,7 +78,8 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                         Math.toRadians(catching.positive("reachRotationToleranceDeg"))),
                 catching.integer("reachIkIterations", 1, 10000),
                 catching.positive("replanSpeedChange"),
-                Math.toRadians(catching.number("fallingTiltDeg", 0, 90)));
+                Math.toRadians(catching.number("fallingTiltDeg", 0, 90)),
+                Optional.empty());
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }
@@ -83,5 +87,17 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
             throw throwing.fieldError("nominal", "every nominal throw must lie inside throw.space");
         }
         return c;
+    }
+
+    /** This config with THROW ending by {@code r} (checked against the THROW duration). */
+    public ControllerConfig withRelease(ClosedLoopRelease r) {
+        if (r.earliest() > throwDuration) {
+            throw new IllegalArgumentException("a closed-loop release's earliest end (" + r.earliest()
+                    + " s) must lie within THROW (" + throwDuration + " s)");
+        }
+        return new ControllerConfig(pd, ik, periodSteps, catchMinDuration, middleDuration, throwDuration, gobackDuration,
+                interceptionHeight, catchVelocityFraction, restPlaneHeight, throwEndSpeedFactor, openTime, closeTime,
+                neutralTime, throwSpace, nominalThrows, grasps, headingSearch, reachIkIterations, replanSpeedChange, fallingTilt,
+                Optional.of(r));
     }
 }

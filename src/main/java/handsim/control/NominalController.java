@@ -96,8 +96,8 @@ public final class NominalController {
             s.closedOnContact = true;
             blendTo(HandPose.CLOSED, config.closeTime(), obs.time(), s);
         }
-        // state transitions on the elapsed time in the state (sec. 3.1, Fig. 3)
-        if (obs.time() - s.phaseStart >= duration(s)) {
+        // state transitions on the elapsed time in the state (sec. 3.1, Fig. 3), or THROW's on the object's turn
+        if (stateOver(obs, s)) {
             enter(s.phase.next(), obs, s);
         } else if (s.phase == Phase.CATCH && !s.closedOnContact && leftPredictedFlight(obs, s)) {
             // the object did not fly as predicted (it bounced off the box): plan the catch again
@@ -107,12 +107,24 @@ public final class NominalController {
             blendTo(HandPose.OPEN, config.openTime(), obs.time(), s);
         }
         // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
-        ik.solve(s.ikSolution, s.trajectory.at(obs.time() - s.trajectoryStart));
+        double t = obs.time() - s.trajectoryStart;
+        ik.solve(s.ikSolution, s.phase == Phase.THROW ? s.trajectory.continuedAt(t) : s.trajectory.at(t));
         for (int d : ik.dofs()) {
             s.targets[d] = s.ikSolution[d];
         }
         double w = Math.max(0, Math.min(1, (obs.time() - s.poseStart) / s.poseDuration));
         poses.slerp(s.poseFrom, poses.pose(s.handPose), w, s.targets);
+    }
+
+    /** The state has run its time; with a {@link ClosedLoopRelease}, THROW ends on the object's predicted turn. */
+    private boolean stateOver(Observation obs, ControllerState s) {
+        double t = obs.time() - s.phaseStart;
+        if (s.phase != Phase.THROW || config.release().isEmpty() || object.longAxis().isEmpty()) {
+            return t >= duration(s);
+        }
+        Vec3 axis = obs.object().orientation().rotate(object.longAxis().get());
+        double predicted = ClosedLoopRelease.predictedTurn(obs.object(), axis, ballistics, config.interceptionHeight());
+        return config.release().get().throwOver(t, duration(s), predicted);
     }
 
     private double duration(ControllerState s) {

@@ -22,6 +22,20 @@ public record PalmTrajectory(Hermite path, Quat startRotation, Quat endRotation)
         return new Frame(path.position(t), startRotation.slerp(endRotation, s));
     }
 
+    /**
+     * As {@link #at}, and past the duration the palm goes on at the curve's end velocity,
+     * turning on at the state's average rate (a THROW held open by a {@link ClosedLoopRelease}).
+     */
+    public Frame continuedAt(double t) {
+        double over = t - path.duration();
+        if (over <= 0) {
+            return at(t);
+        }
+        Vec3 turn = endRotation.mul(startRotation.conjugate()).toRotationVector();
+        return new Frame(path.p1().plus(path.v1().times(over)),
+                Quat.fromRotationVector(turn.times(over / path.duration())).mul(endRotation));
+    }
+
     public Vec3 velocity(double t) {
         return path.velocity(t);
     }

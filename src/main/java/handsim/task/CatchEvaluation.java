@@ -35,7 +35,7 @@ public final class CatchEvaluation {
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
             ObjectSpec object, ThrowTask task, ThrowPolicy throwPolicy) {
         this.task = task;
-        this.controllerConfig = controllerConfig;
+        this.controllerConfig = task.controller(controllerConfig);
         this.limits = limits;
         this.launches = launches;
         this.object = object;

@@ -1,12 +1,13 @@
 package handsim.task;
 
+import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
 
 /**
  * One throw's flight, followed tick by tick: from the release (the last tick with a hand
  * contact while the object still rises) to the catch (the first contact once it comes down),
- * how far the object's long axis turned end over end in between ({@link #endOverEndTurn}), and
- * how fast it was turning so as it left the hand ({@link #endOverEndRate}).
+ * how far the object's long axis turned end over end in between ({@link EndOverEnd#turn}), and
+ * how fast it was turning so as it left the hand ({@link EndOverEnd#rate}).
  * A touch on the way up, when the still-rising hand meets the object again, is part of the
  * throw: the flight begins after it. Engine-free, so the flip criterion is tested on scripted
  * flights.
@@ -51,7 +52,7 @@ final class FlightTracker {
                     stage = Stage.FLYING;
                     rotation = 0;
                     lastAxis = axis;
-                    releaseSpin = axis == null ? Double.NaN : endOverEndRate(angularVelocity, axis, up);
+                    releaseSpin = axis == null ? Double.NaN : EndOverEnd.rate(angularVelocity, axis, up);
                 }
             }
             case FLYING -> {
@@ -63,7 +64,7 @@ final class FlightTracker {
                         catchPoint = position;
                     }
                 } else if (axis != null) {
-                    rotation += endOverEndTurn(lastAxis, axis, up);
+                    rotation += EndOverEnd.turn(lastAxis, axis, up);
                     lastAxis = axis;
                 }
             }
@@ -90,37 +91,5 @@ final class FlightTracker {
     /** Where the object's centre was at the catch (null before it). */
     Vec3 catchPoint() {
         return catchPoint;
-    }
-
-    /**
-     * The end-over-end part of the long axis's turn from {@code from} to {@code to} (unit
-     * vectors): the angle between them, weighted by how horizontal the axis they turn about is.
-     * A can tossed end over end turns about a horizontal axis and counts fully; one spun flat
-     * like a propeller turns about the vertical and counts nothing (it never stands on its end).
-     */
-    static double endOverEndTurn(Vec3 from, Vec3 to, Vec3 up) {
-        Vec3 turnAxis = from.cross(to);
-        double sin = turnAxis.norm();
-        if (sin < 1e-12) {
-            return 0; // no turn, or exactly half a turn in one tick (no axis to tell)
-        }
-        return Math.atan2(sin, from.dot(to)) * horizontalPart(turnAxis, sin, up);
-    }
-
-    /**
-     * The rate (rad/s) at which angular velocity {@code w} turns the unit axis {@code axis} end
-     * over end, weighted as in {@link #endOverEndTurn}: the part of {@code w} square to the axis,
-     * as far as it is horizontal. Spinning about the axis itself or about the vertical adds nothing.
-     */
-    static double endOverEndRate(Vec3 w, Vec3 axis, Vec3 up) {
-        Vec3 square = axis.cross(w.cross(axis)); // w's part square to the axis: what turns the axis
-        double rate = square.norm();
-        return rate < 1e-12 ? 0 : rate * horizontalPart(square, rate, up);
-    }
-
-    /** How horizontal an axis of length {@code norm} is: 1 when square to {@code up}, 0 along it. */
-    private static double horizontalPart(Vec3 axis, double norm, Vec3 up) {
-        double vertical = axis.dot(up) / norm;
-        return Math.sqrt(Math.max(0, 1 - vertical * vertical));
     }
 }

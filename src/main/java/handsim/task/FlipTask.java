@@ -1,6 +1,8 @@
 package handsim.task;
 
 import handsim.config.Json;
+import handsim.control.ClosedLoopRelease;
+import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
@@ -10,6 +12,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from how far
@@ -33,8 +36,9 @@ public final class FlipTask implements ThrowTask {
      *
      * @param flipAngle turning of the long axis that makes one flip (rad)
      * @param nominal the hand-tuned flip throw
+     * @param release how THROW lets go of this object, when not after its fixed duration
      */
-    public record ObjectFlip(double flipAngle, ThrowParameters nominal) {
+    public record ObjectFlip(double flipAngle, ThrowParameters nominal, Optional<ClosedLoopRelease> release) {
     }
 
     /**
@@ -76,7 +80,9 @@ public final class FlipTask implements ThrowTask {
                 if (!space.contains(nominal)) {
                     throw o.fieldError("nominal", "must lie inside throwSpace, got " + nominal);
                 }
-                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal));
+                Optional<ClosedLoopRelease> release = o.has("release") ? Optional.of(ClosedLoopRelease.parse(o.get("release")))
+                        : Optional.empty();
+                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal, release));
                 o.requireNoUnknownFields();
             }
             Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
@@ -147,6 +153,11 @@ public final class FlipTask implements ThrowTask {
     @Override
     public ThrowSpace throwSpace(ThrowSpace fallback) {
         return config.space();
+    }
+
+    @Override
+    public ControllerConfig controller(ControllerConfig base) {
+        return flip.release().map(base::withRelease).orElse(base);
     }
 
     /** eq. (7). */

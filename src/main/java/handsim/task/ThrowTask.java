@@ -1,5 +1,6 @@
 package handsim.task;
 
+import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
@@ -40,6 +41,14 @@ public interface ThrowTask {
      */
     default ThrowSpace throwSpace(ThrowSpace fallback) {
         return fallback;
+    }
+
+    /**
+     * The controller settings this task's episodes run with: {@code base} unless the task needs
+     * its own (the flip task may let go of a throw by the object's predicted turn).
+     */
+    default ControllerConfig controller(ControllerConfig base) {
+        return base;
     }
 
     /** The reward of a finished throw loop (loop index >= 1): the paper's eq. (5), (6) or (7). */

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
+import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -104,27 +105,27 @@ class FlipTaskTest {
         double step = Math.toRadians(10);
         // a can lying along x tipped up about the horizontal z axis by 10 deg: all of it counts
         Vec3 tipped = new Vec3(Math.cos(step), Math.sin(step), 0);
-        assertEquals(step, FlightTracker.endOverEndTurn(Vec3.X, tipped, up), 1e-12);
+        assertEquals(step, EndOverEnd.turn(Vec3.X, tipped, up), 1e-12);
         // the same turn flat, about the vertical (a propeller spin): nothing counts
         Vec3 spun = new Vec3(Math.cos(step), 0, Math.sin(step));
-        assertEquals(0, FlightTracker.endOverEndTurn(Vec3.X, spun, up), 1e-12);
+        assertEquals(0, EndOverEnd.turn(Vec3.X, spun, up), 1e-12);
         // about an axis 60 deg from the vertical: the turn times sin 60 deg (the horizontal part)
         Vec3 n = new Vec3(0, Math.cos(Math.toRadians(60)), Math.sin(Math.toRadians(60)));
         Vec3 between = handsim.math.Quat.fromAxisAngle(n, step).rotate(Vec3.X);
-        assertEquals(step * Math.sin(Math.toRadians(60)), FlightTracker.endOverEndTurn(Vec3.X, between, up), 1e-9);
+        assertEquals(step * Math.sin(Math.toRadians(60)), EndOverEnd.turn(Vec3.X, between, up), 1e-9);
         // summed over a half turn end over end in 10 deg ticks: 180 deg, one can flip
         double total = 0;
         for (int k = 0; k < 18; k++) {
-            total += FlightTracker.endOverEndTurn(rotatedAboutZ(k * step), rotatedAboutZ((k + 1) * step), up);
+            total += EndOverEnd.turn(rotatedAboutZ(k * step), rotatedAboutZ((k + 1) * step), up);
         }
         assertEquals(Math.PI, total, 1e-9);
         assertEquals(1, can.flips(flight(Math.toDegrees(total), true, target)));
         // the same weighting for rates: 5 rad/s about the horizontal z turns the x axis end over end
         // at 5 rad/s; about the vertical or about the axis itself not at all; about n, 5 sin 60 deg
-        assertEquals(5, FlightTracker.endOverEndRate(new Vec3(0, 0, 5), Vec3.X, up), 1e-12);
-        assertEquals(0, FlightTracker.endOverEndRate(new Vec3(0, 5, 0), Vec3.X, up), 1e-12);
-        assertEquals(0, FlightTracker.endOverEndRate(new Vec3(5, 0, 0), Vec3.X, up), 1e-12);
-        assertEquals(5 * Math.sin(Math.toRadians(60)), FlightTracker.endOverEndRate(n.times(5), Vec3.X, up), 1e-9);
+        assertEquals(5, EndOverEnd.rate(new Vec3(0, 0, 5), Vec3.X, up), 1e-12);
+        assertEquals(0, EndOverEnd.rate(new Vec3(0, 5, 0), Vec3.X, up), 1e-12);
+        assertEquals(0, EndOverEnd.rate(new Vec3(5, 0, 0), Vec3.X, up), 1e-12);
+        assertEquals(5 * Math.sin(Math.toRadians(60)), EndOverEnd.rate(n.times(5), Vec3.X, up), 1e-9);
     }
 
     @Test
