@@ -8,6 +8,7 @@ import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.kin.Frame;
 import handsim.kin.Kinematics;
+import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
 import handsim.sim.RigidState;
@@ -92,6 +93,39 @@ class NominalControllerTest {
     }
 
     /** Perfect tracking: joint angles are the last targets; the object on its ballistic arc from the launch. */
+    @Test
+    void aClosedLoopReleaseEndsThrowOnTheObjectsPredictedTurnOrRunsItOn() {
+        // the release of ClosedLoopRelease: THROW ends once the can would turn 270 deg in flight
+        // (not before 0.05 s), and runs up to 0.04 s past its duration while it would turn less
+        ClosedLoopRelease release = new ClosedLoopRelease(Math.toRadians(270), 0.05, 0.04);
+        NominalController withRelease = new NominalController(model, config.withRelease(release), TestSupport.object("can"),
+                obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
+        // rising at 3 m/s from 1.0 m, the can comes down through the 0.72 m interception plane
+        // after 0.69 s: turning end over end at 20 rad/s it would turn some 800 deg, at rest not at all
+        RigidState spinning = new RigidState(new Vec3(0.05, 1.0, 0.5), Quat.IDENTITY, new Vec3(0, 3, 0), new Vec3(20, 0, 0));
+        RigidState still = new RigidState(new Vec3(0.05, 1.0, 0.5), Quat.IDENTITY, new Vec3(0, 3, 0), Vec3.ZERO);
+        assertEquals(0.05, throwLength(withRelease, spinning), tick + 1e-9, "ends at the earliest tick it may");
+        assertEquals(config.throwDuration() + 0.04, throwLength(withRelease, still), tick + 1e-9, "runs on by the extension");
+        assertEquals(config.throwDuration(), throwLength(controller, spinning), tick + 1e-9, "without a release: on time");
+    }
+
+    /** How long THROW lasts when the object is in state {@code object} throughout it (s). */
+    private double throwLength(NominalController c, RigidState object) {
+        ControllerState s = c.start(observe(0, model.poseVector("neutral"), false));
+        double t = tick;
+        while (s.phase() != Phase.THROW) {
+            c.update(observe(t, s.targets().clone(), false), s);
+            t += tick;
+        }
+        double began = t - tick;
+        while (s.phase() == Phase.THROW) {
+            Observation o = observe(t, s.targets().clone(), false);
+            c.update(new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), object, 0), s);
+            t += tick;
+        }
+        return t - tick - began;
+    }
+
     private Observation observe(double t, double[] q, boolean touched) {
         Frame palm = kin.siteFrame(model.site("palm_center"), q);
         Vec3 p = launch.position().plus(launch.velocity().times(t)).plus(GRAVITY.times(0.5 * t * t));

@@ -5,9 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.TestSupport;
+import handsim.config.ConfigException;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ClosedLoopRelease;
+import handsim.control.ControllerConfig;
 import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
+import java.nio.file.Files;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -163,5 +170,26 @@ class FlipTaskTest {
 
     private static Vec3 rotatedAboutZ(double angle) {
         return new Vec3(Math.cos(angle), Math.sin(angle), 0);
+    }
+
+    @Test
+    void aClosedLoopReleaseIsSetPerObjectAndABadOneIsNamed() throws Exception {
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        assertTrue(can.controller(base).release().isEmpty(), "the shipped flip config lets go on time, as the paper");
+        ObjectNode root = (ObjectNode) Json.mapper().readTree(Files.readString(Home.resolve("configs/tasks/flip.json")));
+        ObjectNode release = ((ObjectNode) root.at("/objects/can")).putObject("release");
+        release.put("predictedTurnDeg", 270).put("earliest", 0.15).put("extension", 0.04);
+        FlipTask withRelease = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm());
+        ClosedLoopRelease r = withRelease.controller(base).release().orElseThrow();
+        assertEquals(new ClosedLoopRelease(Math.toRadians(270), 0.15, 0.04), r);
+        assertTrue(new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "club", TestSupport.neutralPalm())
+                .controller(base).release().isEmpty(), "per object: the club has none");
+        release.put("predictedTurnDeg", 0);
+        ConfigException e = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(e.getMessage().contains("predictedTurnDeg"), e.getMessage());
+        release.put("predictedTurnDeg", 270).put("earliest", 0.5); // THROW lasts 0.2 s
+        FlipTask late = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm());
+        IllegalArgumentException tooLate = assertThrows(IllegalArgumentException.class, () -> late.controller(base));
+        assertTrue(tooLate.getMessage().contains("earliest"), tooLate.getMessage());
     }
 }
