@@ -22,6 +22,7 @@ import handsim.task.EpisodeResult;
 import handsim.task.FlipTask;
 import handsim.task.HeightErrors;
 import handsim.task.HeightGoals;
+import handsim.task.LaunchSensitivity;
 import handsim.task.LoopRecord;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
@@ -106,6 +107,20 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "results do not depend on it")
     Integer workers;
 
+    /** Throws a sensitivity run (--copies) makes per copy unless --loops says otherwise. */
+    static final int SENSITIVITY_DEFAULT_LOOPS = 5;
+
+    @Option(names = "--copies", paramLabel = "N",
+            description = "height, flip: instead of the summary, run every episode N times, copy 0 as seeded and the others with "
+                    + "the launch velocity nudged by --nudge in a random direction, for --loops throws (default "
+                    + SENSITIVITY_DEFAULT_LOOPS + ") whether they succeed or not, and report how far each throw's apex and flight "
+                    + "rotation spread across the copies")
+    Integer copies;
+
+    @Option(names = "--nudge", paramLabel = "V", defaultValue = "1e-9",
+            description = "the launch velocity nudge of --copies (m/s, default: ${DEFAULT-VALUE})")
+    double nudge;
+
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
     Path json;
 
@@ -119,7 +134,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        loops = loopsOption != null ? loopsOption : task.equals("flip") ? FLIP_DEFAULT_LOOPS : HEIGHT_DEFAULT_LOOPS;
+        loops = loopsOption != null ? loopsOption
+                : copies != null ? SENSITIVITY_DEFAULT_LOOPS : task.equals("flip") ? FLIP_DEFAULT_LOOPS : HEIGHT_DEFAULT_LOOPS;
         validate();
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
@@ -135,7 +151,9 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("seed", seed);
         out.put("workers", workers);
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, workers)) {
-            if (task.equals("box")) {
+            if (copies != null) {
+                evaluateSensitivity(rollouts, policies, out);
+            } else if (task.equals("box")) {
                 evaluateBox(rollouts, policies, out);
             } else if (task.equals("flip")) {
                 evaluateFlip(rollouts, policies, out);
@@ -175,6 +193,13 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         if (throwHeight != null && (goals != null || task.equals("box"))) {
             throw new IllegalArgumentException("--throw-height goes with the height task and without --goals");
+        }
+        if (copies != null && (copies < 2 || copies > 1000 || task.equals("box"))) {
+            throw new IllegalArgumentException("--copies must be in [2, 1000] and goes with the height or flip task, got " + copies
+                    + " with " + task);
+        }
+        if (!(nudge > 0 && nudge <= 1)) {
+            throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + nudge);
         }
         if (goals != null && !Files.isRegularFile(goals)) {
             throw new IllegalArgumentException("--goals: no file " + goals);
@@ -219,20 +244,28 @@ final class EvaluateCommand implements Callable<Integer> {
         return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t));
     }
 
+    /** The heights of --goals, or null. */
+    private double[] heightList() {
+        return goals != null ? readGoals(goals, "heights", 1).stream().mapToDouble(g -> g[0]).toArray() : null;
+    }
+
+    /** A worker's height goals: --goals in turn, --throw-height, or (null) seeded random ones. */
+    private HeightGoals heightGoals(double[] heightList) {
+        return heightList != null ? HeightGoals.sequence(heightList) : throwHeight != null ? HeightGoals.fixed(throwHeight) : null;
+    }
+
     // ---- height ---------------------------------------------------------------------------
 
     private void evaluateHeight(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws Exception {
         ControllerConfig cc = Runtime.controllerConfig();
         ObjectSpec spec = Runtime.object(object);
-        double[] heightList = goals != null ? readGoals(goals, "heights", 1).stream().mapToDouble(g -> g[0]).toArray() : null;
+        double[] heightList = heightList();
         Tasks tasks = Runtime.tasks();
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
         // episode i has seed --seed + i on whichever worker runs it; printed in seed order
         List<EpisodeResult> results = rollouts.run(episodes, sim -> {
-            HeightGoals g = heightList != null ? HeightGoals.sequence(heightList)
-                    : throwHeight != null ? HeightGoals.fixed(throwHeight) : null;
-            CatchEvaluation evaluation = evaluation(tasks.height(g), policies, cc, spec);
+            CatchEvaluation evaluation = evaluation(tasks.height(heightGoals(heightList)), policies, cc, spec);
             return i -> evaluation.run(sim, seed + i, loops, null);
         }, (i, r) -> {
             for (LoopRecord loop : r.loops()) {
@@ -534,6 +567,94 @@ final class EvaluateCommand implements Callable<Integer> {
                 .add("throws", x, made, Plot.GREY, Plot.Style.BARS)
                 .add("flipped and caught lying in the hand", x, succeeded, Plot.BLUE, Plot.Style.BARS)
                 .writePng(png);
+    }
+
+    // ---- sensitivity ----------------------------------------------------------------------
+
+    /**
+     * --copies: every episode run as seeded and with its launch nudged ({@link LaunchSensitivity}),
+     * each copy for --loops throws; the spread of each throw's apex and flight rotation across
+     * the copies, per episode and averaged.
+     */
+    private void evaluateSensitivity(Rollouts rollouts, Function<ThrowTask, ThrowPolicy> policies, ObjectNode out) throws IOException {
+        ControllerConfig cc = Runtime.controllerConfig();
+        ObjectSpec spec = Runtime.object(object);
+        Tasks tasks = Runtime.tasks();
+        double[] heightList = heightList();
+        List<List<Vec3>> nudges = new ArrayList<>();
+        for (int e = 0; e < episodes; e++) {
+            nudges.add(LaunchSensitivity.nudges(seed + e, copies, nudge));
+        }
+        // run j is copy j % copies of episode j / copies
+        List<List<LoopRecord>> runs = rollouts.run(episodes * copies, sim -> {
+            ThrowTask t = task.equals("height") ? tasks.height(heightGoals(heightList)) : tasks.create(task, object);
+            CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+            return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
+        });
+        List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
+        ArrayNode eps = out.putArray("episodes");
+        for (int e = 0; e < episodes; e++) {
+            List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(runs.subList(e * copies, (e + 1) * copies));
+            perEpisode.add(spreads);
+            ObjectNode o = eps.addObject();
+            o.put("seed", seed + e);
+            o.set("throws", spreadsJson(spreads));
+            System.out.printf(Locale.ROOT, "episode %d: %s%n", seed + e, spreadsLine(spreads));
+        }
+        List<LaunchSensitivity.Spread> mean = LaunchSensitivity.mean(perEpisode);
+        out.put("copies", copies);
+        out.put("nudge_m_s", nudge);
+        out.put("loops", loops);
+        out.set("mean_by_throw", spreadsJson(mean));
+        System.out.printf(Locale.ROOT, "%s task, %s controller, %s, %d episodes x %d copies (launch nudged by %.1e m/s), mean spread "
+                + "across copies by throw: %s%n", task, controller, object, episodes, copies, nudge, spreadsLine(mean));
+        if (plot != null) {
+            boolean rotation = spec.longAxis().isPresent();
+            double[] x = new double[mean.size()], y = new double[mean.size()];
+            for (int i = 0; i < x.length; i++) {
+                x[i] = mean.get(i).throwIndex();
+                y[i] = rotation ? Math.toDegrees(mean.get(i).rotationSd()) : 1000 * mean.get(i).apexSd();
+            }
+            new Plot(String.format(Locale.ROOT, "Launch nudged by %.0e m/s: spread across %d copies, %s controller, %s", nudge, copies,
+                    controller, object), "throw", rotation ? "flight rotation sd (deg, mean over episodes)"
+                            : "apex sd (mm, mean over episodes)")
+                    .add(rotation ? "flight rotation" : "apex", x, y, Plot.BLUE, Plot.Style.LINE_POINTS).writePng(plot);
+            System.out.println("wrote " + plot);
+        }
+    }
+
+    private static ArrayNode spreadsJson(List<LaunchSensitivity.Spread> spreads) {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode();
+        for (LaunchSensitivity.Spread s : spreads) {
+            ObjectNode o = a.addObject();
+            o.put("throw", s.throwIndex());
+            o.put("copies", s.copies());
+            putFinite(o, "apex_sd_mm", 1000 * s.apexSd());
+            putFinite(o, "flight_rotation_sd_deg", Math.toDegrees(s.rotationSd()));
+            putFinite(o, "flight_rotation_range_deg", Math.toDegrees(s.rotationRange()));
+        }
+        return a;
+    }
+
+    /** JSON has no NaN: a figure that could not be measured is null. */
+    private static void putFinite(ObjectNode o, String key, double v) {
+        if (Double.isFinite(v)) {
+            o.put(key, v);
+        } else {
+            o.putNull(key);
+        }
+    }
+
+    private static String spreadsLine(List<LaunchSensitivity.Spread> spreads) {
+        StringBuilder sb = new StringBuilder();
+        for (LaunchSensitivity.Spread s : spreads) {
+            sb.append(String.format(Locale.ROOT, "%sthrow %d: apex sd %.3g mm", sb.length() == 0 ? "" : "; ", s.throwIndex(), 1000 * s.apexSd()));
+            if (Double.isFinite(s.rotationSd())) {
+                sb.append(String.format(Locale.ROOT, ", rotation sd %.3g deg", Math.toDegrees(s.rotationSd())));
+            }
+            sb.append(" (").append(s.copies()).append(')');
+        }
+        return sb.length() == 0 ? "no throws" : sb.toString();
     }
 
     /** The goals listed under {@code key} in a goals file, each with {@code size} numbers. */

@@ -4,6 +4,7 @@ import handsim.control.ControllerConfig;
 import handsim.control.NominalController;
 import handsim.control.PdController;
 import handsim.control.ThrowPolicy;
+import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.Simulator;
@@ -60,7 +61,12 @@ public final class CatchEvaluation {
 
     /** Runs the episode of {@code seed} on {@code sim} (which it resets). */
     public EpisodeResult run(Simulator sim, long seed, int maxLoops, LoopListener listener) {
-        CatchThrowEpisode episode = start(sim, seed);
+        return run(sim, seed, Vec3.ZERO, maxLoops, listener);
+    }
+
+    /** {@link #run} with the launch velocity nudged by {@code launchNudge} (m/s). */
+    public EpisodeResult run(Simulator sim, long seed, Vec3 launchNudge, int maxLoops, LoopListener listener) {
+        CatchThrowEpisode episode = start(sim, seed, launchNudge);
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
             LoopRecord r = episode.tick();
             if (r != null && listener != null) {
@@ -107,12 +113,22 @@ public final class CatchEvaluation {
 
     /** Resets {@code sim} and starts the episode of {@code seed}: the object is in the air, nothing ticked yet. */
     public CatchThrowEpisode start(Simulator sim, long seed) {
+        return start(sim, seed, Vec3.ZERO);
+    }
+
+    /**
+     * The episode of {@code seed} with {@code launchNudge} (m/s) added to the launch velocity:
+     * how far a tiny difference carries through the loops ({@link LaunchSensitivity}).
+     */
+    public CatchThrowEpisode start(Simulator sim, long seed, Vec3 launchNudge) {
         SplittableRandom rng = new SplittableRandom(seed);
         ObjectSpec thrown = object.randomized(rng);
         NominalController controller = new NominalController(sim.model(), controllerConfig, thrown,
                 throwPolicy, sim.config().gravity());
-        RigidState launch = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
+        RigidState sampled = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
+        RigidState launch = new RigidState(sampled.position(), sampled.orientation(), sampled.velocity().plus(launchNudge),
+                sampled.angularVelocity());
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
                 controller, task, limits);
         episode.start(thrown, launch, seed);

@@ -84,6 +84,26 @@ class CommandsTest {
     }
 
     @Test
+    void sensitivityRunsNudgedCopiesOfAnEpisodeAndReportsHowFarEachThrowSpreads(@TempDir Path dir) throws Exception {
+        Path json = dir.resolve("sensitivity.json");
+        String text = runPrinting("evaluate", "--task", "height", "--object", "sphere", "--copies", "2", "--episodes", "1",
+                "--loops", "1", "--seed", "101", "--workers", "1", "--json", json.toString());
+        JsonNode summary = new com.fasterxml.jackson.databind.ObjectMapper().readTree(json.toFile());
+        assertEquals(2, summary.get("copies").asInt());
+        assertEquals(1e-9, summary.get("nudge_m_s").asDouble(), 0, "the default nudge");
+        JsonNode first = summary.get("mean_by_throw").get(0);
+        assertEquals(2, first.get("copies").asInt(), text);
+        // a caught sphere settles in the palm and forgets a nudge of its launch: 1.5e-8 mm apart at the
+        // first throw of seed 101 (and 1e-7 to 4e-5 mm over four throws of seeds 101-104, README), where
+        // a can's copies turn tens of degrees apart by the second throw
+        assertTrue(first.get("apex_sd_mm").asDouble() < 1e-3, first.toString());
+        assertTrue(first.get("flight_rotation_sd_deg").isNull(), "a sphere has no long axis: " + first);
+        assertTrue(Files.size(dir.resolve("sensitivity.png")) > 0);
+        assertTrue(Main.run("evaluate", "--task", "box", "--copies", "2") != 0, "box tests have no copies");
+        assertTrue(Main.run("evaluate", "--copies", "2", "--nudge", "0") != 0, "a nudge of 0 copies the episode");
+    }
+
+    @Test
     void boxEvaluationOfFewTestsWritesStrictJsonWithNoRateForAnEmptyBand(@TempDir Path dir) throws Exception {
         Path json = dir.resolve("box.json");
         String text = runPrinting("evaluate", "--task", "box", "--tests", "1", "--seed", "1", "--workers", "1",
