@@ -585,22 +585,26 @@ final class EvaluateCommand implements Callable<Integer> {
         for (int e = 0; e < episodes; e++) {
             nudges.add(LaunchSensitivity.nudges(seed + e, copies, nudge));
         }
-        // run j is copy j % copies of episode j / copies
-        List<List<LoopRecord>> runs = rollouts.run(episodes * copies, sim -> {
+        // run j is copy j % copies of episode j / copies; an episode is printed once its copies are in
+        List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
+        List<List<LoopRecord>> copiesDone = new ArrayList<>();
+        ArrayNode eps = out.putArray("episodes");
+        rollouts.run(episodes * copies, sim -> {
             ThrowTask t = task.equals("height") ? tasks.height(heightGoals(heightList)) : tasks.create(task, object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
+        }, (j, loopsOfCopy) -> {
+            copiesDone.add(loopsOfCopy);
+            if (copiesDone.size() == copies) {
+                List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(copiesDone);
+                copiesDone.clear();
+                perEpisode.add(spreads);
+                ObjectNode o = eps.addObject();
+                o.put("seed", seed + j / copies);
+                o.set("throws", spreadsJson(spreads));
+                System.out.printf(Locale.ROOT, "episode %d: %s%n", seed + j / copies, spreadsLine(spreads));
+            }
         });
-        List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
-        ArrayNode eps = out.putArray("episodes");
-        for (int e = 0; e < episodes; e++) {
-            List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(runs.subList(e * copies, (e + 1) * copies));
-            perEpisode.add(spreads);
-            ObjectNode o = eps.addObject();
-            o.put("seed", seed + e);
-            o.set("throws", spreadsJson(spreads));
-            System.out.printf(Locale.ROOT, "episode %d: %s%n", seed + e, spreadsLine(spreads));
-        }
         List<LaunchSensitivity.Spread> mean = LaunchSensitivity.mean(perEpisode);
         out.put("copies", copies);
         out.put("nudge_m_s", nudge);
