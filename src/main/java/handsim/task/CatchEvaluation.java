@@ -127,8 +127,8 @@ public final class CatchEvaluation {
                 throwPolicy, sim.config().gravity());
         RigidState sampled = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
-        RigidState launch = new RigidState(sampled.position(), sampled.orientation(), sampled.velocity().plus(launchNudge),
-                sampled.angularVelocity());
+        RigidState launch = launchNudge.equals(Vec3.ZERO) ? sampled
+                : new RigidState(sampled.position(), sampled.orientation(), sampled.velocity().plus(launchNudge), sampled.angularVelocity());
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
                 controller, task, limits);
         episode.start(thrown, launch, seed);
