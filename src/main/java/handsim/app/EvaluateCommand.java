@@ -129,7 +129,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Option(names = "--plot", paramLabel = "FILE",
             description = "the histogram (height), success map (box) or loops per episode (flip, with the throws by flight rotation "
-                    + "beside it as NAME-rotation.png) PNG (default: next to --json, same name with .png)")
+                    + "beside it as NAME-rotation.png) PNG, or with --copies the spread by throw (default: next to --json, same name "
+                    + "with .png)")
     Path plot;
 
     @Override
@@ -197,6 +198,9 @@ final class EvaluateCommand implements Callable<Integer> {
         if (copies != null && (copies < 2 || copies > 1000 || task.equals("box"))) {
             throw new IllegalArgumentException("--copies must be in [2, 1000] and goes with the height or flip task, got " + copies
                     + " with " + task);
+        }
+        if (copies != null && csv != null) {
+            throw new IllegalArgumentException("--csv goes without --copies (a sensitivity run writes its figures with --json)");
         }
         if (!(nudge > 0 && nudge <= 1)) {
             throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + nudge);

@@ -101,6 +101,8 @@ class CommandsTest {
         assertTrue(Files.size(dir.resolve("sensitivity.png")) > 0);
         assertTrue(Main.run("evaluate", "--task", "box", "--copies", "2") != 0, "box tests have no copies");
         assertTrue(Main.run("evaluate", "--copies", "2", "--nudge", "0") != 0, "a nudge of 0 copies the episode");
+        assertTrue(Main.run("evaluate", "--copies", "2", "--csv", dir.resolve("x.csv").toString()) != 0, "no per-loop CSV of copies");
+        assertTrue(Files.notExists(dir.resolve("x.csv")), "nothing half-written");
     }
 
     @Test
