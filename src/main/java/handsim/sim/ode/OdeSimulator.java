@@ -29,8 +29,10 @@ import org.ode4j.ode.DAMotorJoint;
 import org.ode4j.ode.DBallJoint;
 import org.ode4j.ode.DBody;
 import org.ode4j.ode.DBox;
+import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
+import org.ode4j.ode.DCylinder;
 import org.ode4j.ode.DGeom;
 import org.ode4j.ode.DHingeJoint;
 import org.ode4j.ode.DJoint;
@@ -41,6 +43,7 @@ import org.ode4j.ode.DPlane;
 import org.ode4j.ode.DSpace;
 import org.ode4j.ode.DUniversalJoint;
 import org.ode4j.ode.DWorld;
+import org.ode4j.ode.OdeConfig;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
 
@@ -53,6 +56,10 @@ import org.ode4j.ode.OdeHelper;
 public final class OdeSimulator implements Simulator {
 
     static {
+        // ODE's analytic colliders for cylinders (cylinder-box clips faces and edges), not
+        // libccd's single jumping contact; cylinder-capsule, which ODE has no analytic collider
+        // for, is CylinderCapsuleCollider's. Must precede the first use of ode4j's geoms.
+        OdeConfig.setLibCCDEndabled(false);
         OdeHelper.initODE2(0);
     }
 
@@ -116,6 +123,7 @@ public final class OdeSimulator implements Simulator {
     private final DVector3 motorAxis = new DVector3();
     private final ContactReport contacts = new ContactReport();
     private final DContactBuffer contactBuffer;
+    private final CylinderCapsuleCollider cylinderCapsule = new CylinderCapsuleCollider();
     private final double[] handErp;
     private final double[] handCfm;
     private final List<DGeom> objectGeoms = new ArrayList<>();
@@ -596,7 +604,11 @@ public final class OdeSimulator implements Simulator {
 
     /** Generates the contacts of one geometry pair, with the paper's per-contact ERP and CFM. */
     private void collidePair(DGeom o1, DGeom o2) {
-        int n = OdeHelper.collide(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer());
+        boolean cylinderCapsulePair = o1 instanceof DCylinder && o2 instanceof DCapsule
+                || o1 instanceof DCapsule && o2 instanceof DCylinder;
+        int n = cylinderCapsulePair
+                ? cylinderCapsule.dColliderFn(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer())
+                : OdeHelper.collide(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer());
         if (n == 0) {
             return;
         }
