@@ -55,9 +55,10 @@ final class TrainCommand implements Callable<Integer> {
     @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
     Path runs;
 
-    @Option(names = "--init-actor", paramLabel = "DATASET",
+    @Option(names = "--init-actor", paramLabel = "DATASET_OR_ACTOR",
             description = "start the actor fitted to a warm-start dataset (dataset.csv, or the warmstart run folder "
-                    + "holding it) with the config's pretrain settings, instead of from scratch")
+                    + "holding it) with the config's pretrain settings, or as a trained throw policy (a .json policy "
+                    + "file of the same task, object and state, e.g. to fine-tune it), instead of from scratch")
     Path initActor;
 
     @Option(names = "--episodes", paramLabel = "N",

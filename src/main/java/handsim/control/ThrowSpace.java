@@ -35,6 +35,16 @@ public record ThrowSpace(double[] low, double[] high) {
         }
     }
 
+    /** Whether both boxes have the same bounds (a record of arrays compares them by identity). */
+    public boolean sameBox(ThrowSpace other) {
+        return java.util.Arrays.equals(low, other.low) && java.util.Arrays.equals(high, other.high);
+    }
+
+    @Override
+    public String toString() {
+        return "[" + java.util.Arrays.toString(low) + ", " + java.util.Arrays.toString(high) + "]";
+    }
+
     /** Maps an action in [-1, 1]^7 (clipped) onto the box. */
     public ThrowParameters fromAction(double[] action) {
         double[] p = new double[ThrowParameters.SIZE];

@@ -152,6 +152,49 @@ public final class DdpgAgent {
                 note, actionSpace);
     }
 
+    /**
+     * Starts the actor, and its target, as a saved policy: its layers' weights, and the
+     * normaliser's statistics as if from {@code observations} observations (so the first ones DDPG
+     * adds barely move the inputs the actor was trained on). For fine-tuning a trained actor; the
+     * critic stays fresh. The policy must have this actor's sizes, activations and normalisation.
+     */
+    public void startActorFrom(Policy p, long observations) {
+        var mine = policy("", "");
+        if (p.layers().size() != mine.layers().size()) {
+            throw new IllegalArgumentException("the policy has " + p.layers().size() + " layers, the actor "
+                    + mine.layers().size() + " (ddpg.actorHidden)");
+        }
+        for (int i = 0; i < p.layers().size(); i++) {
+            Policy.Layer theirs = p.layers().get(i), ours = mine.layers().get(i);
+            if (theirs.inputs() != ours.inputs() || theirs.outputs() != ours.outputs()
+                    || theirs.activation() != ours.activation()) {
+                throw new IllegalArgumentException("the policy's layer " + i + " is " + theirs.inputs() + " -> "
+                        + theirs.outputs() + " " + theirs.activation() + ", the actor's " + ours.inputs() + " -> "
+                        + ours.outputs() + " " + ours.activation());
+            }
+        }
+        if ((p.mean() != null) != normalizer.enabled() || p.mean() != null && p.clip() != normalizer.clip()) {
+            throw new IllegalArgumentException("the policy's observation normalisation (" + (p.mean() != null ? "clip " + p.clip() : "none")
+                    + ") is not the actor's (ddpg.normalizeObservations, ddpg.observationClip)");
+        }
+        if (observations < 2) {
+            throw new IllegalArgumentException("the policy's statistics must count as at least 2 observations, got " + observations);
+        }
+        for (int i = 0; i < p.layers().size(); i++) {
+            var layer = actor.getLayer(i);
+            layer.setParam("W", Nd4j.create(p.layers().get(i).weights()).transpose().dup()); // DL4J keeps W as [in, out]
+            layer.setParam("b", Networks.matrix(p.layers().get(i).bias(), 1, p.layers().get(i).outputs()));
+        }
+        actorTarget.params().assign(actor.params());
+        if (p.mean() != null) {
+            double[] m2 = p.std();
+            for (int i = 0; i < m2.length; i++) {
+                m2[i] = m2[i] * m2[i] * observations; // Welford's sum of squares for this std
+            }
+            normalizer.restore(p.mean(), m2, observations);
+        }
+    }
+
     // ---- learning -------------------------------------------------------------------------
 
     /** Whether the replay buffer holds enough transitions for a batch. */

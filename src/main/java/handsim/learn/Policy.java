@@ -118,6 +118,21 @@ public final class Policy {
         return layers;
     }
 
+    /** The normaliser's observation means, or null when the policy reads raw observations. */
+    public double[] mean() {
+        return mean == null ? null : mean.clone();
+    }
+
+    /** The normaliser's standard deviations, or null with {@link #mean}. */
+    public double[] std() {
+        return std == null ? null : std.clone();
+    }
+
+    /** Normalised observations are clipped to [-clip, clip]. */
+    public double clip() {
+        return clip;
+    }
+
     /** The action for one observation (thread-safe). */
     public double[] act(double[] observation) {
         if (observation.length != observationSize()) {

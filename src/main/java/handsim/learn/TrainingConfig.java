@@ -34,12 +34,16 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
 
     /**
      * This configuration in the file's format: {@code parse(toJson())} gives it back. Plain DDPG
-     * writes no {@code td3} block, as its config files have none.
+     * writes no {@code td3} block, as its config files have none, and an unset
+     * {@code pretrain.policyObservations} is left out.
      */
     public ObjectNode toJson() {
         ObjectNode node = Json.mapper().valueToTree(this);
         if (ddpg.td3().equals(Td3.OFF)) {
             ((ObjectNode) node.get("ddpg")).remove("td3");
+        }
+        if (pretrain.policyObservations() == 0) {
+            ((ObjectNode) node.get("pretrain")).remove("policyObservations"); // not set, as in the files that leave it out
         }
         return node;
     }
@@ -206,13 +210,18 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
      * @param batchSize examples per gradient step
      * @param learningRate Adam learning rate while pretraining (the DDPG actorLr is restored after)
      * @param validationFraction share of the examples held out to measure generalisation
+     * @param policyObservations when the actor starts from a trained policy instead (train
+     *     --init-actor POLICY.json), how many observations its normaliser's statistics count as;
+     *     0 (also when absent) means not set, and such a start refuses
      */
-    public record Pretrain(int epochs, int batchSize, double learningRate, double validationFraction) {
+    public record Pretrain(int epochs, int batchSize, double learningRate, double validationFraction,
+            long policyObservations) {
 
         static Pretrain parse(Json j) {
             j.allow("comment");
             Pretrain p = new Pretrain(j.integer("epochs", 1, 1_000_000), j.integer("batchSize", 1, 1 << 16),
-                    j.positive("learningRate"), j.number("validationFraction", 0, 0.9));
+                    j.positive("learningRate"), j.number("validationFraction", 0, 0.9),
+                    j.has("policyObservations") ? j.integer("policyObservations", 0, Integer.MAX_VALUE) : 0);
             j.requireNoUnknownFields();
             return p;
         }

@@ -2,12 +2,14 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.learn.DdpgAgent;
 import handsim.learn.EpisodeStats;
 import handsim.learn.LearningCurves;
 import handsim.learn.MetricsCsv;
 import handsim.learn.Policy;
 import handsim.learn.Rollouts;
 import handsim.learn.Trainer;
+import handsim.learn.TrainingConfig;
 import handsim.learn.TrainingListener;
 import handsim.report.Outputs;
 import java.io.IOException;
@@ -42,6 +44,8 @@ public final class TrainRun {
     public static final String POLICY = "policy.json";
     /** A warm-started run's copy of its imitation dataset. */
     public static final String INIT_DATASET = "init-dataset.csv";
+    /** A fine-tuning run's copy of the policy its actor started as. */
+    public static final String INIT_POLICY = "init-policy.json";
 
     private final Path dir;
     private final TrainConfig config;
@@ -68,30 +72,64 @@ public final class TrainRun {
 
     /**
      * A new run whose actor starts fitted to an imitation dataset (the warm start of sec. 4.4;
-     * {@code initDataset} is a {@link Warmstart} dataset or its folder, copied into the run), or
-     * from scratch when null.
+     * {@code initActor} is a {@link Warmstart} dataset or its folder), or as a trained throw
+     * policy ({@code initActor} a {@code .json} policy file, fine-tuned on this run's task and
+     * physics), or from scratch when null. The dataset or policy is copied into the run.
      */
     public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
-            ObjectNode provenance, Path initDataset) throws IOException {
+            ObjectNode provenance, Path initActor) throws IOException {
         if (Files.exists(dir.resolve(CONFIG))) {
             throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
         }
-        double[][][] data = initDataset == null ? null : readDataset(initDataset, envs); // read before anything is written
+        boolean isPolicy = initActor != null && initActor.getFileName().toString().endsWith(".json");
+        // read before anything is written
+        double[][][] data = initActor == null || isPolicy ? null : readDataset(initActor, envs);
+        Policy policy = isPolicy ? initPolicy(initActor, config, envs) : null;
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
         Outputs.writeJson(dir.resolve(RUN_JSON), provenance);
-        if (initDataset != null) {
-            Files.copy(Files.isDirectory(initDataset) ? initDataset.resolve(Warmstart.DATASET) : initDataset,
+        if (isPolicy) {
+            Files.copy(initActor, dir.resolve(INIT_POLICY));
+        } else if (initActor != null) {
+            Files.copy(Files.isDirectory(initActor) ? initActor.resolve(Warmstart.DATASET) : initActor,
                     dir.resolve(INIT_DATASET));
         }
-        return new TrainRun(dir, config, envs, rollouts, freshTrainer(config, envs, data));
+        return new TrainRun(dir, config, envs, rollouts, freshTrainer(config, envs, data, policy));
     }
 
-    /** The trainer of a run's start: from scratch, or with the actor fitted to the imitation data. */
-    private static Trainer freshTrainer(TrainConfig config, ThrowEnvs envs, double[][][] data) {
+    /** The trainer of a run's start: from scratch, with the actor fitted to the imitation data, or as a policy. */
+    private static Trainer freshTrainer(TrainConfig config, ThrowEnvs envs, double[][][] data, Policy policy) {
         int n = envs.observationSize(), k = handsim.control.ThrowParameters.SIZE;
+        if (policy != null) {
+            TrainingConfig l = config.learner();
+            DdpgAgent agent = Warmstart.seededAgent(l, n, k);
+            agent.startActorFrom(policy, l.pretrain().policyObservations());
+            return Trainer.withAgent(l, agent);
+        }
         return data == null ? Trainer.create(config.learner(), n, k)
                 : Trainer.withAgent(config.learner(), Warmstart.pretrainedAgent(config, n, k, data, null));
+    }
+
+    /**
+     * The actor of a throw policy file, checked against the run: the same task, object, state
+     * encoding and throw space, and a set {@code pretrain.policyObservations}.
+     */
+    private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvs envs) {
+        ThrowPolicyFile f = ThrowPolicyFile.load(file);
+        String mismatch = !f.task().equals(envs.task()) || !f.object().equals(envs.object().name())
+                ? "was trained for the " + f.task() + " task with a " + f.object() + ", this run is the " + envs.task()
+                        + " task with a " + envs.object().name()
+                : f.state() != envs.state().encoding() ? "reads the " + f.state().label() + " state, this run gives the "
+                        + envs.state().encoding().label() + " state (run.state)"
+                : !f.space().sameBox(envs.space()) ? "throws in " + f.space() + ", this run's task in " + envs.space() : null;
+        if (mismatch != null) {
+            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
+        }
+        if (config.learner().pretrain().policyObservations() == 0) {
+            throw new IllegalArgumentException("--init-actor " + file + " is a policy: set pretrain.policyObservations, "
+                    + "how many observations its normaliser's statistics count as");
+        }
+        return f.policy();
     }
 
     /** A warm-start dataset as (states, actions) sized for {@code envs}' observations and the throw parameters. */
@@ -149,8 +187,10 @@ public final class TrainRun {
         TrainConfig config = savedConfig(dir);
         Path checkpoint = dir.resolve(CHECKPOINT);
         Path dataset = dir.resolve(INIT_DATASET);
+        Path policy = dir.resolve(INIT_POLICY);
         Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
-                : freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null);
+                : freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
+                        Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
         return new TrainRun(dir, config, envs, rollouts, trainer);
     }
 

@@ -168,14 +168,20 @@ public final class Warmstart {
     public static DdpgAgent pretrainedAgent(TrainConfig c, int stateSize, int actionSize, double[][][] data,
             ActorPretraining.Result[] result) {
         TrainingConfig l = c.learner();
-        // the agent as Trainer.create makes it (the root seed's first draw), so a warm-started run differs from a cold one
-        // by the pretraining alone
-        DdpgAgent agent = DdpgAgent.create(l.ddpg(), stateSize, actionSize, new handsim.learn.Rng(l.seed()).nextLong());
+        DdpgAgent agent = seededAgent(l, stateSize, actionSize);
         ActorPretraining.Result r = ActorPretraining.fit(agent, data[0], data[1], l.pretrain(), l.seed());
         if (result != null) {
             result[0] = r;
         }
         return agent;
+    }
+
+    /**
+     * A fresh agent as {@link handsim.learn.Trainer#create} makes it (the root seed's first draw),
+     * so a warm-started or fine-tuning run differs from a cold one by its actor's start alone.
+     */
+    static DdpgAgent seededAgent(TrainingConfig l, int stateSize, int actionSize) {
+        return DdpgAgent.create(l.ddpg(), stateSize, actionSize, new handsim.learn.Rng(l.seed()).nextLong());
     }
 
     /** The pretraining curves (training and held-out mean squared error per epoch). */

@@ -47,6 +47,37 @@ class DdpgAgentTest {
         }
     }
 
+    /**
+     * A fresh agent started as another agent's policy snapshot acts as that agent (to round-off,
+     * 1e-12: the same weights, the same arithmetic), and its target actor too. The snapshot's
+     * normaliser statistics count as 10,000 observations, so one far-out observation moves an
+     * action by less than 1e-2 (the normalised input moves by about 1/10,000 of its offset). A
+     * snapshot of another shape is refused, naming the layer.
+     */
+    @Test
+    void anActorStartedAsAPolicyActsAsThePolicy() {
+        DdpgAgent trained = PolicyTest.trainedAgent(5, 2, 31);
+        Policy snapshot = trained.policy("teacher", "[-1, 1]^2");
+        DdpgAgent fresh = DdpgAgent.create(trained.config(), 5, 2, 32);
+        fresh.startActorFrom(snapshot, 10_000);
+        Rng rng = new Rng(33);
+        for (int i = 0; i < 10; i++) {
+            double[] s = PolicyTest.gaussian(rng, 5, 3);
+            assertArrayEquals(trained.act(s), fresh.act(s), 1e-12, "observation " + i);
+            INDArray sn = Networks.matrix(fresh.normalizer.normalize(s), 1, 5);
+            assertArrayEquals(fresh.act(s), Networks.rowMajor(fresh.actorTarget.output(sn, false)), 1e-12, "target actor");
+        }
+        double[] probe = {0.5, -0.3, 1.0, 0.2, -1.1}, before = fresh.act(probe);
+        fresh.observe(new double[] {30, -30, 30, -30, 30});
+        double[] after = fresh.act(probe);
+        for (int k = 0; k < 2; k++) {
+            assertEquals(before[k], after[k], 1e-2, "action " + k + " after one far-out observation");
+        }
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> DdpgAgent.create(trained.config(), 6, 2, 34).startActorFrom(snapshot, 10_000));
+        assertTrue(e.getMessage().contains("layer 0"), e.getMessage());
+    }
+
     @Test
     void sameSeedSameDataSameNetworks() {
         double[] p1 = params(PolicyTest.trainedAgent(6, 2, 21));

@@ -35,11 +35,18 @@ import org.junit.jupiter.api.io.TempDir;
 class TrainRunTest {
 
     private static TrainConfig tinyConfig() {
+        return tinyConfig(Map.of());
+    }
+
+    /** The tiny run with further {@code --set} overrides. */
+    private static TrainConfig tinyConfig(Map<String, String> more) {
         Path file = Home.resolve("configs/train/height.json");
-        return TrainConfig.parse(Json.of("tiny height run", Json.withOverrides(file.toString(), Json.load(file).node(), Map.of(
+        Map<String, String> kv = new java.util.HashMap<>(Map.of(
                 "training.episodes", "4", "training.parallelEpisodes", "2", "training.maxDecisionsPerEpisode", "2",
                 "training.checkpointEveryEpisodes", "2", "exploration.warmupSteps", "3", "ddpg.batchSize", "2",
-                "ddpg.replayCapacity", "100", "run.workers", "1"))));
+                "ddpg.replayCapacity", "100", "run.workers", "1"));
+        kv.putAll(more);
+        return TrainConfig.parse(Json.of("tiny height run", Json.withOverrides(file.toString(), Json.load(file).node(), kv)));
     }
 
     private static ThrowEnvs envs() {
@@ -112,6 +119,39 @@ class TrainRunTest {
         double[] state = new double[StateVector.Encoding.PAPER.baseSize() + 1];
         state[StateVector.Encoding.PAPER.baseSize()] = 1.2;
         assertArrayEquals(pa.policy().act(state), pb.policy().act(state), 0);
+    }
+
+    /**
+     * {@code train --init-actor POLICY.json} (issue 7's "DATASET_OR_ACTOR"): the run's actor starts
+     * as the shipped height policy, acting as it does up to round-off (1e-9: the same weights,
+     * float arithmetic in another order), and the policy is copied into the run. A policy of
+     * another task, or a config without {@code pretrain.policyObservations}, is refused before
+     * anything is written.
+     */
+    @Test
+    void aRunMayStartItsActorAsATrainedPolicy(@TempDir Path tmp) throws Exception {
+        Path shipped = ThrowPolicyFile.shipped("height", "sphere");
+        handsim.learn.Policy policy = ThrowPolicyFile.load(shipped).policy();
+        TrainConfig c = tinyConfig(Map.of("pretrain.policyObservations", "10000"));
+        try (Rollouts r = rollouts()) {
+            ThrowEnvs heightSpace = TestSupport.heightEnvs(TestSupport.heightTask(null).throwSpace(
+                    ControllerConfig.load(Home.resolve("configs/controller.json")).throwSpace())); // as train makes it
+            TrainRun run = TrainRun.start(tmp.resolve("tuned"), c, heightSpace, r, Json.mapper().createObjectNode(), shipped);
+            java.util.SplittableRandom rng = new java.util.SplittableRandom(3);
+            for (int i = 0; i < 20; i++) {
+                double[] obs = rng.doubles(policy.observationSize(), -1, 2).toArray();
+                assertArrayEquals(policy.act(obs), run.trainer().agent().act(obs), 1e-9, "observation " + i);
+            }
+            assertEquals(Files.readString(shipped), Files.readString(tmp.resolve("tuned").resolve(TrainRun.INIT_POLICY)));
+
+            IllegalArgumentException unset = assertThrows(IllegalArgumentException.class, () -> TrainRun.start(
+                    tmp.resolve("unset"), tinyConfig(), heightSpace, r, Json.mapper().createObjectNode(), shipped));
+            assertTrue(unset.getMessage().contains("pretrain.policyObservations"), unset.getMessage());
+            IllegalArgumentException other = assertThrows(IllegalArgumentException.class, () -> TrainRun.start(
+                    tmp.resolve("other"), c, heightSpace, r, Json.mapper().createObjectNode(), ThrowPolicyFile.shipped("flip", "can")));
+            assertTrue(other.getMessage().contains("flip task"), other.getMessage());
+            assertFalse(Files.exists(tmp.resolve("unset")) || Files.exists(tmp.resolve("other")), "nothing written");
+        }
     }
 
     @Test
