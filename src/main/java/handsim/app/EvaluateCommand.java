@@ -610,25 +610,41 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         });
         List<LaunchSensitivity.Spread> mean = LaunchSensitivity.mean(perEpisode);
+        List<LaunchSensitivity.Spread> median = LaunchSensitivity.median(perEpisode);
         out.put("copies", copies);
         out.put("nudge_m_s", nudge);
         out.put("loops", loops);
         out.set("mean_by_throw", spreadsJson(mean));
+        out.set("median_by_throw", spreadsJson(median));
         System.out.printf(Locale.ROOT, "%s task, %s controller, %s, %d episodes x %d copies (launch nudged by %.1e m/s), mean spread "
                 + "across copies by throw: %s%n", task, controller, object, episodes, copies, nudge, spreadsLine(mean));
+        System.out.printf(Locale.ROOT, "median over episodes: %s%n", spreadsLine(median));
         if (plot != null) {
             boolean rotation = spec.longAxis().isPresent();
-            double[] x = new double[mean.size()], y = new double[mean.size()];
-            for (int i = 0; i < x.length; i++) {
-                x[i] = mean.get(i).throwIndex();
-                y[i] = rotation ? Math.toDegrees(mean.get(i).rotationSd()) : 1000 * mean.get(i).apexSd();
+            // the spreads span many orders of magnitude (1e-7 mm to tens of degrees): log10 scale
+            double[] logMean = log10Spreads(mean, rotation), logMedian = log10Spreads(median, rotation);
+            java.util.DoubleSummaryStatistics range = java.util.stream.DoubleStream.concat(java.util.Arrays.stream(logMean),
+                    java.util.Arrays.stream(logMedian)).filter(Double::isFinite).summaryStatistics();
+            Plot chart = new Plot(String.format(Locale.ROOT, "Launch nudged by %.0e m/s: spread across %d copies, %s controller, %s", nudge, copies,
+                    controller, object), "throw", rotation ? "log10 of flight rotation sd (deg)" : "log10 of apex sd (mm)")
+                    .add("mean over episodes", throwIndices(mean), logMean, Plot.BLUE, Plot.Style.LINE_POINTS)
+                    .add("median over episodes", throwIndices(median), logMedian, Plot.ORANGE, Plot.Style.LINE_POINTS);
+            if (range.getCount() > 0) {
+                chart.yRange(Math.floor(range.getMin()) - 0.5, Math.ceil(range.getMax()) + 1.5); // room for the legend
             }
-            new Plot(String.format(Locale.ROOT, "Launch nudged by %.0e m/s: spread across %d copies, %s controller, %s", nudge, copies,
-                    controller, object), "throw", rotation ? "flight rotation sd (deg, mean over episodes)"
-                            : "apex sd (mm, mean over episodes)")
-                    .add(rotation ? "flight rotation" : "apex", x, y, Plot.BLUE, Plot.Style.LINE_POINTS).writePng(plot);
+            chart.writePng(plot);
             System.out.println("wrote " + plot);
         }
+    }
+
+    private static double[] throwIndices(List<LaunchSensitivity.Spread> spreads) {
+        return spreads.stream().mapToDouble(LaunchSensitivity.Spread::throwIndex).toArray();
+    }
+
+    /** log10 of each throw's flight rotation spread in degrees, or of its apex spread in mm. */
+    private static double[] log10Spreads(List<LaunchSensitivity.Spread> spreads, boolean rotation) {
+        return spreads.stream().mapToDouble(s -> Math.log10(rotation ? Math.toDegrees(s.rotationSd()) : 1000 * s.apexSd()))
+                .toArray();
     }
 
     private static ArrayNode spreadsJson(List<LaunchSensitivity.Spread> spreads) {

@@ -66,6 +66,19 @@ public final class LaunchSensitivity {
 
     /** Spreads of several episodes, throw by throw: the mean of each episode's figure (episodes without it left out), copies summed. */
     public static List<Spread> mean(List<List<Spread>> episodes) {
+        return summary(episodes, LaunchSensitivity::average);
+    }
+
+    /**
+     * The same with the median of each episode's figure: the typical episode, where a few
+     * episodes that jump (a can rolling the other way) dominate the mean.
+     */
+    public static List<Spread> median(List<List<Spread>> episodes) {
+        return summary(episodes, LaunchSensitivity::middle);
+    }
+
+    private static List<Spread> summary(List<List<Spread>> episodes,
+            java.util.function.ToDoubleFunction<List<Double>> statistic) {
         int throwsMade = episodes.stream().mapToInt(List::size).max().orElse(0);
         List<Spread> out = new ArrayList<>();
         for (int k = 1; k <= throwsMade; k++) {
@@ -80,7 +93,8 @@ public final class LaunchSensitivity {
                     addFinite(ranges, s.rotationRange());
                 }
             }
-            out.add(new Spread(k, copies, average(apex), average(rotation), average(ranges)));
+            out.add(new Spread(k, copies, statistic.applyAsDouble(apex), statistic.applyAsDouble(rotation),
+                    statistic.applyAsDouble(ranges)));
         }
         return out;
     }
@@ -93,6 +107,16 @@ public final class LaunchSensitivity {
 
     private static double average(List<Double> v) {
         return v.isEmpty() ? Double.NaN : v.stream().mapToDouble(Double::doubleValue).average().orElseThrow();
+    }
+
+    /** The median (NaN for none). */
+    private static double middle(List<Double> v) {
+        if (v.isEmpty()) {
+            return Double.NaN;
+        }
+        double[] x = v.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        int n = x.length;
+        return n % 2 == 1 ? x[n / 2] : (x[n / 2 - 1] + x[n / 2]) / 2;
     }
 
     /** Sample standard deviation (NaN below 2 values). */

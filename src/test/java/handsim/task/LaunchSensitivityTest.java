@@ -69,5 +69,14 @@ class LaunchSensitivityTest {
         assertEquals(0.4, m.get(1).apexSd(), 1e-12);
         assertEquals(2, m.get(1).copies());
         assertTrue(Double.isNaN(m.get(1).rotationSd()));
+        // medians: a third episode that jumps moves the mean of throw 1's apex spread to 33.6, the median to 0.6
+        List<LaunchSensitivity.Spread> c = List.of(new LaunchSensitivity.Spread(1, 3, 100, 0.2, 0.4));
+        assertEquals(33.6, LaunchSensitivity.mean(List.of(a, b, c)).get(0).apexSd(), 1e-12);
+        List<LaunchSensitivity.Spread> med = LaunchSensitivity.median(List.of(a, b, c));
+        assertEquals(0.6, med.get(0).apexSd(), 1e-12);
+        assertEquals(0.2, med.get(0).rotationSd(), 1e-12);
+        assertEquals(0.4, med.get(0).rotationRange(), 1e-12);
+        assertEquals(9, med.get(0).copies());
+        assertEquals(0.4, LaunchSensitivity.median(List.of(a, b)).get(0).apexSd(), 1e-12, "an even count: the middle two's mean");
     }
 }
