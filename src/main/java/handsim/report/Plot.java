@@ -142,15 +142,16 @@ public final class Plot {
         g.rotate(-Math.PI / 2);
         g.drawString(yLabel, -(TOP + ph / 2) - fm.stringWidth(yLabel) / 2, 20);
         g.setTransform(rot);
-        // the legend, as wide as its longest label, on a white box over the top-right corner of the data
+        // the legend, as wide as its longest label, on a white box in the corner that hides the least data
         int labelWidth = 0;
         for (Series s : series) {
             labelWidth = Math.max(labelWidth, fm.stringWidth(s.label));
         }
-        int lx = LEFT + pw - labelWidth - 40;
+        java.awt.Rectangle box = legendBox(legendCorner(labelWidth + 42, 20 * series.size() + 6), labelWidth + 42,
+                20 * series.size() + 6);
         g.setColor(new Color(255, 255, 255, 220));
-        g.fillRect(lx - 6, TOP + 4, labelWidth + 42, 20 * series.size() + 6);
-        int ly = TOP + 20;
+        g.fill(box);
+        int lx = box.x + 6, ly = box.y + 16;
         for (Series s : series) {
             g.setColor(s.color);
             g.fillRect(lx, ly - 9, 18, 8);
@@ -160,6 +161,51 @@ public final class Plot {
         }
         g.dispose();
         return img;
+    }
+
+    /** Where the legend may go, in order of preference. */
+    enum Corner { TOP_RIGHT, TOP_LEFT, BOTTOM_RIGHT, BOTTOM_LEFT }
+
+    /**
+     * The corner where a legend of w x h pixels covers the fewest data: the points, and the lines
+     * between them sampled every 2 pixels. Ties go to the earlier corner of {@link Corner}.
+     */
+    Corner legendCorner(int w, int h) {
+        double[] xr = range(true), yr = yRange != null ? yRange : range(false);
+        Axis xa = new Axis(xr[0], xr[1], LEFT, WIDTH - RIGHT), ya = new Axis(yr[0], yr[1], HEIGHT - BOTTOM, TOP);
+        long[] covered = new long[Corner.values().length];
+        for (Series s : series) {
+            for (int i = 0; i < s.x.length; i++) {
+                if (!Double.isFinite(s.y[i])) {
+                    continue;
+                }
+                double px = xa.map(s.x[i]), py = ya.map(s.y[i]);
+                boolean line = s.style != Style.POINTS && i > 0 && Double.isFinite(s.y[i - 1]);
+                double qx = line ? xa.map(s.x[i - 1]) : px, qy = line ? ya.map(s.y[i - 1]) : py;
+                int samples = 1 + (int) (Math.hypot(px - qx, py - qy) / 2);
+                for (int k = 0; k < samples; k++) {
+                    double t = (double) k / samples, x = px + t * (qx - px), y = py + t * (qy - py);
+                    for (Corner c : Corner.values()) {
+                        if (legendBox(c, w, h).contains(x, y)) {
+                            covered[c.ordinal()]++;
+                        }
+                    }
+                }
+            }
+        }
+        Corner best = Corner.TOP_RIGHT;
+        for (Corner c : Corner.values()) {
+            if (covered[c.ordinal()] < covered[best.ordinal()]) {
+                best = c;
+            }
+        }
+        return best;
+    }
+
+    /** The legend's box in a corner of the plot area, 4 pixels in from its frame. */
+    private static java.awt.Rectangle legendBox(Corner c, int w, int h) {
+        boolean right = c == Corner.TOP_RIGHT || c == Corner.BOTTOM_RIGHT, top = c == Corner.TOP_RIGHT || c == Corner.TOP_LEFT;
+        return new java.awt.Rectangle(right ? WIDTH - RIGHT - 4 - w : LEFT + 4, top ? TOP + 4 : HEIGHT - BOTTOM - 4 - h, w, h);
     }
 
     private double barWidth(Axis xa) {
