@@ -259,6 +259,12 @@ public final class TrainRun {
         provenance.put("episodes", trainer.episodes());
         provenance.put("decisions", trainer.steps());
         provenance.put("seed", config.learner().seed());
+        Json started = Json.load(dir.resolve(RUN_JSON)); // the command and commit that started the run: how to train it again
+        for (String key : List.of("command", "commit")) {
+            if (started.has(key)) {
+                provenance.put(key, started.string(key));
+            }
+        }
         provenance.set("config", config.toJson());
         Policy actor = trainer.agent().policy(config.run().task() + " task, " + config.run().object() + ", run "
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");

@@ -62,8 +62,10 @@ class TrainRunTest {
         PrintStream quiet = new PrintStream(new ByteArrayOutputStream());
         Path whole = tmp.resolve("whole"), split = tmp.resolve("split");
         try (Rollouts r = rollouts()) {
-            TrainRun.start(whole, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet);
-            TrainRun.start(split, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet, 2);
+            com.fasterxml.jackson.databind.node.ObjectNode started = Json.mapper().createObjectNode()
+                    .put("command", "scripts/handsim train --config tiny.json").put("commit", "0123abc");
+            TrainRun.start(whole, tinyConfig(), envs(), r, started).run(quiet);
+            TrainRun.start(split, tinyConfig(), envs(), r, started).run(quiet, 2);
             assertEquals(2, MetricsCsv.read(split.resolve(TrainRun.METRICS)).size(), "the first session stopped after 2 episodes");
             TrainRun.resume(split, envs(), r).run(quiet);
         }
@@ -72,6 +74,9 @@ class TrainRunTest {
             assertTrue(Files.size(split.resolve(f)) > 0, f + " written");
         }
         assertSameRun(whole, split);
+        Json provenance = Json.load(split.resolve(TrainRun.POLICY)).get("provenance");
+        assertEquals("0123abc", provenance.string("commit"), "the policy names the commit that trained it");
+        assertEquals("scripts/handsim train --config tiny.json", provenance.string("command"));
         assertEquals(tinyConfig().toJson(), TrainRun.savedConfig(split).toJson(), "the merged config is saved in the folder");
     }
 
