@@ -76,7 +76,8 @@ public final class Plot {
     }
 
     BufferedImage render() {
-        double[] xr = range(true), yr = yRange != null ? yRange : range(false);
+        Axis xa = xAxis(), ya = yAxis();
+        double[] xr = {xa.lo(), xa.hi()}, yr = {ya.lo(), ya.hi()};
         BufferedImage img = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
@@ -84,7 +85,6 @@ public final class Plot {
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, WIDTH, HEIGHT);
         int pw = WIDTH - LEFT - RIGHT, ph = HEIGHT - TOP - BOTTOM;
-        Axis xa = new Axis(xr[0], xr[1], LEFT, LEFT + pw), ya = new Axis(yr[0], yr[1], TOP + ph, TOP);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
         FontMetrics fm = g.getFontMetrics();
         // grid and ticks
@@ -147,8 +147,8 @@ public final class Plot {
         for (Series s : series) {
             labelWidth = Math.max(labelWidth, fm.stringWidth(s.label));
         }
-        java.awt.Rectangle box = legendBox(legendCorner(labelWidth + 42, 20 * series.size() + 6), labelWidth + 42,
-                20 * series.size() + 6);
+        int legendW = labelWidth + 42, legendH = 20 * series.size() + 6;
+        java.awt.Rectangle box = legendBox(legendCorner(xa, ya, legendW, legendH), legendW, legendH);
         g.setColor(new Color(255, 255, 255, 220));
         g.fill(box);
         int lx = box.x + 6, ly = box.y + 16;
@@ -171,8 +171,10 @@ public final class Plot {
      * between them sampled every 2 pixels. Ties go to the earlier corner of {@link Corner}.
      */
     Corner legendCorner(int w, int h) {
-        double[] xr = range(true), yr = yRange != null ? yRange : range(false);
-        Axis xa = new Axis(xr[0], xr[1], LEFT, WIDTH - RIGHT), ya = new Axis(yr[0], yr[1], HEIGHT - BOTTOM, TOP);
+        return legendCorner(xAxis(), yAxis(), w, h);
+    }
+
+    private Corner legendCorner(Axis xa, Axis ya, int w, int h) {
         long[] covered = new long[Corner.values().length];
         for (Series s : series) {
             for (int i = 0; i < s.x.length; i++) {
@@ -257,6 +259,18 @@ public final class Plot {
         }
         return String.format(java.util.Locale.ROOT, Math.abs(v) >= 10 ? "%.1f" : Math.abs(v) >= 1 ? "%.2f" : "%.3f", v)
                 .replaceAll("0+$", "").replaceAll("\\.$", "");
+    }
+
+    /** The x axis: the data's range across the plot area's width. */
+    private Axis xAxis() {
+        double[] r = range(true);
+        return new Axis(r[0], r[1], LEFT, WIDTH - RIGHT);
+    }
+
+    /** The y axis: the fixed or the data's range, up the plot area's height. */
+    private Axis yAxis() {
+        double[] r = yRange != null ? yRange : range(false);
+        return new Axis(r[0], r[1], HEIGHT - BOTTOM, TOP);
     }
 
     private record Axis(double lo, double hi, double p0, double p1) {

@@ -52,8 +52,17 @@ public final class TrainRun {
     private final ThrowEnvs envs;
     private final handsim.rollout.Rollouts rollouts;
     private final Trainer trainer;
+    /** The command and commit that started the run (from run.json), written into every policy file. */
+    private final ObjectNode startedBy;
 
     private TrainRun(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, Trainer trainer) {
+        Json started = Json.load(dir.resolve(RUN_JSON));
+        this.startedBy = Json.mapper().createObjectNode();
+        for (String key : List.of("command", "commit")) {
+            if (started.has(key)) {
+                startedBy.put(key, started.string(key));
+            }
+        }
         this.dir = dir;
         this.config = config;
         this.envs = envs;
@@ -259,12 +268,7 @@ public final class TrainRun {
         provenance.put("episodes", trainer.episodes());
         provenance.put("decisions", trainer.steps());
         provenance.put("seed", config.learner().seed());
-        Json started = Json.load(dir.resolve(RUN_JSON)); // the command and commit that started the run: how to train it again
-        for (String key : List.of("command", "commit")) {
-            if (started.has(key)) {
-                provenance.put(key, started.string(key));
-            }
-        }
+        provenance.setAll(startedBy); // how to train it again
         provenance.set("config", config.toJson());
         Policy actor = trainer.agent().policy(config.run().task() + " task, " + config.run().object() + ", run "
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
