@@ -1,18 +1,17 @@
 package handsim.app;
 
 import handsim.model.HandModel;
-import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
-import handsim.task.CatchLoopScene;
-import handsim.task.HeldBallScenario;
-import handsim.task.HeldBallScene;
 import handsim.task.Goal;
 import handsim.task.HeightControl;
 import handsim.task.HeightGoals;
+import handsim.task.HeldBallScenario;
+import handsim.task.HeldBallScene;
 import handsim.task.InteractiveScene;
 import handsim.task.Scene;
+import handsim.task.SceneSetup;
 import handsim.task.ServoLoop;
+import handsim.task.SwitchingScene;
 import handsim.viewer.Camera;
 import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;
@@ -25,8 +24,9 @@ import picocli.CommandLine.Option;
 /**
  * {@code handsim render}: a headless run written as numbered PNG frames ({@code 00000.png}, ...),
  * from the home camera of {@code configs/viewer.json}, drawn by the viewer's renderer. Without
- * {@code --controller} the foundation's held-ball scene; with it, the controller's
- * catch-and-throw loop and its goal plane.
+ * {@code --controller} or {@code --task} the foundation's held-ball scene; with either, the scene
+ * {@code view} shows for the same task, object, controller and seed ({@link ShippedScenes}: the
+ * learned controller plays {@code --policy} or the shipped policy), with its goal.
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Write a headless run as PNG frames DIR/00000.png, 00001.png, ... (make a video with "
@@ -51,13 +51,22 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "seed (default: ${DEFAULT-VALUE})")
     long seed;
 
-    @Option(names = "--controller", description = "nominal: render the catch-and-throw loop instead of the held ball")
+    @Option(names = "--task", description = "height, box or flip: render that task's catch-and-throw loop instead of "
+            + "the held ball (default with --controller: height)")
+    String task;
+
+    @Option(names = "--controller", description = "nominal or learned: render the catch-and-throw loop instead of the "
+            + "held ball (default with --task: nominal)")
     String controller;
 
-    @Option(names = "--object", defaultValue = "sphere", description = "with --controller: sphere, can, cuboid or club")
+    @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file (default: the "
+            + "policy shipped for the task and object)")
+    Path policy;
+
+    @Option(names = "--object", defaultValue = "sphere", description = "with --task or --controller: sphere, can, cuboid or club")
     String object;
 
-    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "with --controller: apex goal, m")
+    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
 
     @Override
@@ -67,9 +76,6 @@ final class RenderCommand implements Callable<Integer> {
         }
         if (fps < 1 || fps > 240) {
             throw new IllegalArgumentException("--fps must be in [1, 240], got " + fps);
-        }
-        if (controller != null && !controller.equals("nominal")) {
-            throw new IllegalArgumentException("--controller must be nominal, got " + controller);
         }
         int frames = (int) Math.round(seconds * fps);
         ViewerConfig config = ViewerSession.config();
@@ -92,14 +98,21 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private Scene scene(ViewerConfig viewerConfig) {
-        HandModel model = Runtime.model(null);
-        SimConfig config = Runtime.simConfig();
-        Simulator sim = Runtime.simulator(model, config);
-        if (controller == null) {
+        if (controller == null && task == null) {
+            HandModel model = Runtime.model(null);
+            Simulator sim = Runtime.simulator(model, Runtime.simConfig());
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
         ViewerConfig.Goals g = viewerConfig.goals();
-        return new CatchLoopScene(sim, evaluation, seed, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()));
+        ShippedScenes catalog = new ShippedScenes(HeightGoals.fixed(throwHeight),
+                new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
+        SceneSetup wanted = new SceneSetup(task == null ? "height" : task, object, controller == null ? "nominal" : controller, seed);
+        catalog.validate(wanted);
+        SwitchingScene scene = new SwitchingScene(catalog, wanted);
+        scene.openingNotes().forEach(n -> System.out.println("handsim render: " + n));
+        SceneSetup shown = scene.shown();
+        System.out.println("handsim render: " + shown.task() + " task, " + shown.object() + ", " + shown.controller()
+                + " controller, seed " + shown.seed());
+        return scene;
     }
 }

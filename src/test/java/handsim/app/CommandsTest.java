@@ -127,6 +127,20 @@ class CommandsTest {
     }
 
     @Test
+    void renderDrawsATasksSceneWithItsShippedPolicyAndRejectsAnUnknownTask(@TempDir Path dir) throws Exception {
+        // needs an X display, as RenderSmokeTest: the test command runs under xvfb-run
+        String text = runPrinting("render", "--task", "flip", "--object", "can", "--controller", "learned", "--seconds",
+                "0.5", "--fps", "4", "--width", "160", "--height", "120", "--out", dir.toString());
+        // the scene view shows for the same options: the flip task with the shipped can policy (a fallback
+        // would print the scene it fell back to, the height task or the nominal controller)
+        assertTrue(text.contains("render: flip task, can, learned controller, seed 1"), text);
+        assertTrue(text.contains("wrote 2 frames"), text);
+        var frame = ImageIO.read(dir.resolve("00001.png").toFile());
+        assertEquals(160, frame.getWidth());
+        assertTrue(Main.run("render", "--task", "juggle", "--out", dir.resolve("x").toString()) != 0, "an unknown task is refused");
+    }
+
+    @Test
     void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null);
         // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
