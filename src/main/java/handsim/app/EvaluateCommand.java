@@ -35,6 +35,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.function.Function;
+import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -487,13 +488,13 @@ final class EvaluateCommand implements Callable<Integer> {
         }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
                 r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
         if (csv != null) {
-            StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,apex_m,"
+            StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
                     + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
-                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
                             csvNumber(Math.toDegrees(loop.catchTilt())), flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
-                            csvNumber(loop.releaseSpin()), csvNumber(loop.apexHeight()),
+                            csvNumber(loop.releaseSpin()), csvNumber(Math.toDegrees(loop.arrivalTilt())), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
                             loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
                 }
@@ -521,6 +522,17 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("throws", b.throwsMade());
             o.put("successes", b.successes());
         }
+        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(runs.stream().flatMap(r -> r.loops().stream()).toList());
+        ArrayNode byArrival = out.putArray("throws_by_arrival_tilt");
+        for (FlipTask.ArrivalBin b : arrivals) {
+            ObjectNode o = byArrival.addObject();
+            o.put("from_deg", roundedDegrees(b.from()));
+            o.put("to_deg", roundedDegrees(b.to()));
+            o.put("throws", b.throwsMade());
+            o.put("successes", b.successes());
+            o.put("drops", b.drops());
+            o.put("standing", b.standing());
+        }
         ArrayNode eps = out.putArray("episodes");
         for (FlipRun r : runs) {
             ObjectNode o = eps.addObject();
@@ -536,6 +548,10 @@ final class EvaluateCommand implements Callable<Integer> {
                 + "%d throws that did not flip%n", controller, object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
                 out.get("drops").asInt(), out.get("tilted_catches").asInt(), out.get("unflipped_endings").asInt());
+        System.out.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
+                + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
+                        Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
+                        .collect(Collectors.joining("; ")));
         if (plot != null) {
             double[] x = new double[runs.size()], y = new double[runs.size()];
             for (int i = 0; i < x.length; i++) {

@@ -321,6 +321,7 @@ public final class CatchThrowEpisode {
                 loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
                 index == 0 || longAxis == null ? Double.NaN : flight.rotation(),
                 index == 0 ? Double.NaN : flight.releaseSpin(), catchTilt, flight.catchPoint(),
+                index == 0 || longAxis == null ? Double.NaN : flight.arrivalTilt(),
                 maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
         loops.add(r);
         return r;

@@ -23,6 +23,7 @@ final class FlightTracker {
     private double rotation;
     private double releaseSpin = Double.NaN;
     private Vec3 catchPoint;
+    private double arrivalTilt = Double.NaN;
 
     FlightTracker(Vec3 up) {
         this.up = up.normalized();
@@ -35,6 +36,7 @@ final class FlightTracker {
         rotation = 0;
         releaseSpin = Double.NaN;
         catchPoint = null;
+        arrivalTilt = Double.NaN;
     }
 
     /**
@@ -62,6 +64,7 @@ final class FlightTracker {
                     } else {
                         stage = Stage.LANDED;
                         catchPoint = position;
+                        arrivalTilt = axis == null ? Double.NaN : Math.asin(Math.min(1, Math.abs(axis.dot(up))));
                     }
                 } else if (axis != null) {
                     rotation += EndOverEnd.turn(lastAxis, axis, up);
@@ -86,6 +89,14 @@ final class FlightTracker {
      */
     double releaseSpin() {
         return releaseSpin;
+    }
+
+    /**
+     * How far the long axis stood out of the horizontal at the catch (rad: 0 arriving lying,
+     * pi/2 end-first; NaN before the catch and for objects without a long axis).
+     */
+    double arrivalTilt() {
+        return arrivalTilt;
     }
 
     /** Where the object's centre was at the catch (null before it). */

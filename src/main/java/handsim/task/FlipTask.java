@@ -203,6 +203,44 @@ public final class FlipTask implements ThrowTask {
         return out;
     }
 
+    /**
+     * Throws whose object reached the hand again, by how far its long axis stood out of the
+     * horizontal at that first touch ({@link LoopRecord#arrivalTilt}), and how they ended.
+     *
+     * @param from, to the bin's edges (rad)
+     * @param standing caught, but not lying in the hand ({@link #properCatch})
+     */
+    public record ArrivalBin(double from, double to, int throwsMade, int successes, int drops, int standing) {
+    }
+
+    /** Width of the arrival-tilt bins: six bins from lying (0) to end-first (90 deg). */
+    public static final double ARRIVAL_BIN = Math.toRadians(15);
+
+    /**
+     * The throws of {@code loops} that came back to the hand (loop 0 and throws without a first
+     * touch left out) binned by their arrival tilt, all six bins from 0 to 90 deg: whether a
+     * policy's failures are cans that arrive end-first (a wrong turn) or lying ones the catch lost.
+     */
+    public List<ArrivalBin> byArrivalTilt(List<LoopRecord> loops) {
+        int bins = (int) Math.round(Math.PI / 2 / ARRIVAL_BIN);
+        int[] made = new int[bins], succeeded = new int[bins], dropped = new int[bins], standing = new int[bins];
+        for (LoopRecord l : loops) {
+            if (l.index() == 0 || !Double.isFinite(l.arrivalTilt())) {
+                continue;
+            }
+            int b = Math.min(bins - 1, (int) (l.arrivalTilt() / ARRIVAL_BIN));
+            made[b]++;
+            succeeded[b] += success(l) ? 1 : 0;
+            dropped[b] += l.caught() ? 0 : 1;
+            standing[b] += l.caught() && !properCatch(l) ? 1 : 0;
+        }
+        List<ArrivalBin> out = new ArrayList<>();
+        for (int b = 0; b < bins; b++) {
+            out.add(new ArrivalBin(b * ARRIVAL_BIN, (b + 1) * ARRIVAL_BIN, made[b], succeeded[b], dropped[b], standing[b]));
+        }
+        return out;
+    }
+
     /** Held in the hand and lying in it: the long axis at most maxCatchTilt out of the palm's plane. */
     public boolean properCatch(LoopRecord loop) {
         return loop.caught() && !(loop.catchTilt() > config.maxCatchTilt());

@@ -28,6 +28,9 @@ import handsim.math.Vec3;
  *     dropped and for objects without a long axis)
  * @param catchPoint where the object's centre was at the first touch of the catch after the
  *     throw's release (m, world; null for loop 0 and when nothing touched it again)
+ * @param arrivalTilt how far the object's long axis stood out of the horizontal at that first
+ *     touch (rad: 0 arriving lying, pi/2 end-first; NaN when there was none and for objects
+ *     without a long axis): a can arriving end-first is dropped or ends standing in the hand
  * @param maxPenetration deepest hand-object penetration during the loop (m)
  * @param maxLimitExcess largest excursion of any joint beyond its limit (rad)
  * @param peakTorqueRatio largest |tau| / strength of any DOF (1 = at the human limit; PD torques are clamped)
@@ -35,5 +38,5 @@ import handsim.math.Vec3;
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
         ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, double catchTilt,
-        Vec3 catchPoint, double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
+        Vec3 catchPoint, double arrivalTilt, double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

@@ -81,6 +81,15 @@ class CommandsTest {
         assertEquals(summary.get("throws").asInt(), binned, summary.toString());
         assertEquals(summary.get("loops_completed").asInt(), binnedSuccesses, summary.toString());
         assertTrue(Files.size(dir.resolve("flip-rotation.png")) > 0);
+        // every throw that came back to the hand is binned by its arrival tilt: at most all of them, and
+        // every success among them (a success is a catch, so it came back)
+        int arrived = 0, arrivedSuccesses = 0;
+        for (JsonNode b : summary.get("throws_by_arrival_tilt")) {
+            arrived += b.get("throws").asInt();
+            arrivedSuccesses += b.get("successes").asInt();
+        }
+        assertTrue(arrived <= summary.get("throws").asInt(), summary.toString());
+        assertEquals(summary.get("loops_completed").asInt(), arrivedSuccesses, summary.toString());
     }
 
     @Test

@@ -35,7 +35,7 @@ class FlipTaskTest {
 
     private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where, double catchTiltDeg) {
         return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
-                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), caught ? where : null, 0, 0, 0, 1);
+                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), caught ? where : null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test
@@ -51,14 +51,14 @@ class FlipTaskTest {
         assertEquals(1, club.flips(flight(320, true, target)));
         assertEquals(2, club.flips(flight(720, true, target)));
         assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, 0, 0, 0, 1)), "the throw-in is no flip");
+                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1)), "the throw-in is no flip");
     }
 
     @Test
     void throwsAreBinnedByFlightRotationInQuarterFlips() {
         // can: quarters of its 180 deg flip, 45 deg wide; the throw-in and a throw with no measured flight are left out
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, 0, 0, 0, 1);
+                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
         var bins = can.byFlightRotation(List.of(throwIn, flight(10, true, target), flight(200, true, target),
                 flight(210, true, target), flight(220, false, target), flight(Double.NaN, true, target)));
         assertEquals(5, bins.size(), "0-45 up to 180-225, the empty bins between included");
@@ -70,6 +70,30 @@ class FlipTaskTest {
         assertEquals(3, bins.get(4).throwsMade());
         assertEquals(2, bins.get(4).successes(), "the dropped one is no success");
         assertTrue(can.byFlightRotation(List.of(throwIn)).isEmpty());
+    }
+
+    private static LoopRecord arriving(double arrivalDeg, boolean caught, double catchTiltDeg) {
+        return new LoopRecord(1, caught, 1.3, caught ? null : Vec3.ZERO, Double.NaN, null, false, Double.NaN, Math.PI,
+                Double.NaN, caught ? Math.toRadians(catchTiltDeg) : Double.NaN, Vec3.ZERO, Math.toRadians(arrivalDeg), 0, 0, 0, 1);
+    }
+
+    @Test
+    void throwsAreBinnedByHowFarTheAxisStoodOutOfTheHorizontalWhenTheObjectCameBack() {
+        // six 15 deg bins from lying (0) to end-first (90), empty ones included; a throw that never came back
+        // to the hand (NaN) and the throw-in are left out
+        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
+                Double.NaN, Double.NaN, null, Math.toRadians(10), 0, 0, 0, 1);
+        var bins = can.byArrivalTilt(List.of(throwIn, arriving(5, true, 10), arriving(14, false, 0), arriving(70, true, 80),
+                arriving(89, false, 0), arriving(90, true, 85), arriving(Double.NaN, false, 0)));
+        assertEquals(6, bins.size());
+        assertEquals(Math.toRadians(75), bins.get(5).from(), 1e-12);
+        assertEquals(Math.toRadians(90), bins.get(5).to(), 1e-12);
+        assertEquals(new FlipTask.ArrivalBin(0, Math.toRadians(15), 2, 1, 1, 0), bins.get(0), "a flip caught lying, a drop");
+        assertEquals(0, bins.get(1).throwsMade());
+        assertEquals(1, bins.get(4).standing(), "70 deg: caught standing 80 deg out of the palm");
+        assertEquals(2, bins.get(5).throwsMade(), "exactly end-first counts in the last bin");
+        assertEquals(1, bins.get(5).drops());
+        assertEquals(1, bins.get(5).standing());
     }
 
     @Test
@@ -163,9 +187,14 @@ class FlipTaskTest {
         f.observe(true, true, caughtAt, falling, rotatedAboutZ(21 * step), spin);
         assertEquals(Math.PI, f.rotation(), 1e-9, "only the turn since the last release counts");
         assertEquals(caughtAt, f.catchPoint());
+        // the axis at 210 deg from the horizontal x stands 30 deg out of the horizontal as it arrives
+        assertEquals(Math.toRadians(30), f.arrivalTilt(), 1e-9);
         // after the catch nothing more is counted
         f.observe(false, true, p, falling, rotatedAboutZ(30 * step), spin);
         assertEquals(Math.PI, f.rotation(), 1e-9);
+        assertEquals(Math.toRadians(30), f.arrivalTilt(), 1e-9, "the first touch only");
+        f.reset();
+        assertTrue(Double.isNaN(f.arrivalTilt()), "a new throw has not arrived");
     }
 
     private static Vec3 rotatedAboutZ(double angle) {
