@@ -562,9 +562,12 @@ final class EvaluateCommand implements Callable<Integer> {
                     controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
                     Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);
-            Path rotationPlot = plot.resolveSibling(plot.getFileName().toString().replaceFirst("\\.png$", "") + "-rotation.png");
+            Path rotationPlot = besidePlot("-rotation");
             plotByRotation(bins, rotationPlot);
             System.out.println("wrote " + rotationPlot);
+            Path arrivalPlot = besidePlot("-arrival");
+            plotByArrival(arrivals, arrivalPlot);
+            System.out.println("wrote " + arrivalPlot);
         }
     }
 
@@ -586,6 +589,36 @@ final class EvaluateCommand implements Callable<Integer> {
                 "rotation of the long axis in flight (deg, bin centre)", "throws")
                 .add("throws", x, made, Plot.GREY, Plot.Style.BARS)
                 .add("flipped and caught lying in the hand", x, succeeded, Plot.BLUE, Plot.Style.BARS)
+                .writePng(png);
+    }
+
+    /** A second picture next to --plot: NAME-suffix.png. */
+    private Path besidePlot(String suffix) {
+        return plot.resolveSibling(plot.getFileName().toString().replaceFirst("\\.png$", "") + suffix + ".png");
+    }
+
+    /**
+     * Throws that came back to the hand by arrival tilt, how each ended drawn as stacked bars
+     * (each bar drawn over the taller one before it): caught lying but not flipped (grey),
+     * dropped (red), caught standing (orange), flipped and caught lying (blue).
+     */
+    private void plotByArrival(List<FlipTask.ArrivalBin> bins, Path png) throws IOException {
+        int n = bins.size();
+        double[] x = new double[n], all = new double[n], notDropped = new double[n], lying = new double[n], ok = new double[n];
+        for (int i = 0; i < n; i++) {
+            FlipTask.ArrivalBin b = bins.get(i);
+            x[i] = Math.toDegrees(b.from() + b.to()) / 2;
+            all[i] = b.throwsMade();
+            ok[i] = b.successes();
+            lying[i] = b.successes() + b.standing();
+            notDropped[i] = b.throwsMade() - b.drops();
+        }
+        new Plot(String.format(Locale.ROOT, "Throws by arrival tilt, %s controller, %s", controller, object),
+                "long axis out of the horizontal at the first touch of the catch (deg, bin centre)", "throws")
+                .add("dropped", x, all, Plot.RED, Plot.Style.BARS)
+                .add("caught, not flipped", x, notDropped, Plot.GREY, Plot.Style.BARS)
+                .add("caught standing", x, lying, Plot.ORANGE, Plot.Style.BARS)
+                .add("flipped and caught lying", x, ok, Plot.BLUE, Plot.Style.BARS)
                 .writePng(png);
     }
 

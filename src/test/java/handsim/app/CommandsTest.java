@@ -81,6 +81,7 @@ class CommandsTest {
         assertEquals(summary.get("throws").asInt(), binned, summary.toString());
         assertEquals(summary.get("loops_completed").asInt(), binnedSuccesses, summary.toString());
         assertTrue(Files.size(dir.resolve("flip-rotation.png")) > 0);
+        assertTrue(Files.size(dir.resolve("flip-arrival.png")) > 0, "the throws by arrival tilt, drawn");
         // every throw that came back to the hand is binned by its arrival tilt: at most all of them, and
         // every success among them (a success is a catch, so it came back)
         int arrived = 0, arrivedSuccesses = 0;
