@@ -176,7 +176,9 @@ public final class CatchLoopScene implements InteractiveScene {
                     lastThrow.boxDistance()));
         }
         if (lastThrow != null && !Double.isNaN(lastThrow.flightRotation())) {
-            s.put("last turn", String.format(Locale.ROOT, "%.0f deg in flight", Math.toDegrees(lastThrow.flightRotation())));
+            String arrival = Double.isNaN(lastThrow.arrivalTilt()) ? ""
+                    : String.format(Locale.ROOT, ", came back %.0f deg out of the horizontal", Math.toDegrees(lastThrow.arrivalTilt()));
+            s.put("last turn", String.format(Locale.ROOT, "%.0f deg in flight", Math.toDegrees(lastThrow.flightRotation())) + arrival);
         }
         s.put("last", lastEvent);
         s.put("episode", "seed " + seed + " (" + episodes + " so far)");
