@@ -7,6 +7,7 @@ import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
+import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -68,12 +69,21 @@ public final class CatchEvaluation {
     public EpisodeResult run(Simulator sim, long seed, Vec3 launchNudge, int maxLoops, LoopListener listener) {
         CatchThrowEpisode episode = start(sim, seed, launchNudge);
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
-            LoopRecord r = episode.tick();
+            LoopRecord r = tick(episode, seed);
             if (r != null && listener != null) {
                 listener.onLoop(seed, r);
             }
         }
         return episode.result(seed);
+    }
+
+    /** One tick; a divergence names the episode's seed and loop, so the run that failed can be replayed. */
+    private static LoopRecord tick(CatchThrowEpisode episode, long seed) {
+        try {
+            return episode.tick();
+        } catch (SimulationDiverged e) {
+            throw new SimulationDiverged("episode of seed " + seed + ", loop " + episode.loops().size() + ": " + e.getMessage());
+        }
     }
 
     /**
@@ -85,7 +95,7 @@ public final class CatchEvaluation {
         CatchThrowEpisode episode = start(sim, seed);
         int inARow = 0;
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows) {
-            LoopRecord r = episode.tick();
+            LoopRecord r = tick(episode, seed);
             if (r == null) {
                 continue;
             }

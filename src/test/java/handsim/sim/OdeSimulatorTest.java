@@ -2,6 +2,7 @@ package handsim.sim;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
@@ -42,6 +43,24 @@ class OdeSimulatorTest {
                     assertEquals(0, sim.bodyFrame(b).origin().distance(frames[b].origin()), 1e-9);
                 }
             }
+        }
+    }
+
+    @Test
+    void anArmSpinningFarFasterThanAnyCatchIsReportedAsDiverged() {
+        // 2,000 N m on the wrist (its torque limit is about 10 N m) spins the 0.25 kg palm past 2,000 rad/s
+        // within its free range; in seeded catch loops the palm turns at most about 150 rad/s, limp about 1,300
+        try (OdeSimulator sim = new OdeSimulator(m, config)) {
+            sim.reset(m.poseVector("neutral"), 1);
+            double[] tau = new double[m.dofCount()];
+            tau[m.dof("wrist_flexion").index()] = 2000;
+            sim.setJointTorques(tau);
+            SimulationDiverged e = assertThrows(SimulationDiverged.class, () -> {
+                for (int k = 0; k < steps(config, 0.01); k++) {
+                    sim.step();
+                }
+            });
+            assertTrue(e.getMessage().contains("body palm spins at") && e.getMessage().contains("rad/s"), e.getMessage());
         }
     }
 

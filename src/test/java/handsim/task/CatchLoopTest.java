@@ -1,6 +1,7 @@
 package handsim.task;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
@@ -8,9 +9,12 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.math.Vec3;
+import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
 import java.io.IOException;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Proxy;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -100,6 +104,31 @@ class CatchLoopTest {
             }
         }
         assertTrue(caught >= 4, object + ": " + outcomes);
+    }
+
+    @Test
+    void aDivergenceNamesTheEpisodesSeedAndLoopSoTheRunCanBeReplayed() {
+        // the real engine, except that its 3,000th step (0.6 s, before the throw-in's catch is judged) reports a
+        // divergence as OdeSimulator does
+        try (OdeSimulator engine = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+            int[] steps = {0};
+            Simulator failing = (Simulator) Proxy.newProxyInstance(Simulator.class.getClassLoader(), new Class<?>[] {Simulator.class},
+                    (proxy, method, args) -> {
+                        if (method.getName().equals("step") && ++steps[0] == 3000) {
+                            throw new SimulationDiverged("body palm spins at 9999 rad/s");
+                        }
+                        try {
+                            return method.invoke(engine, args);
+                        } catch (InvocationTargetException e) {
+                            throw e.getCause();
+                        }
+                    });
+            SimulationDiverged e = assertThrows(SimulationDiverged.class, () -> evaluation().run(failing, 17, 3, null));
+            assertEquals("episode of seed 17, loop 0: body palm spins at 9999 rad/s", e.getMessage());
+            steps[0] = 0;
+            e = assertThrows(SimulationDiverged.class, () -> evaluation().runWhileSuccessful(failing, 18, 3));
+            assertTrue(e.getMessage().startsWith("episode of seed 18, loop 0: "), e.getMessage());
+        }
     }
 
     static CatchEvaluation evaluation() {

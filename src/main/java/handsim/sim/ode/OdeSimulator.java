@@ -76,6 +76,21 @@ public final class OdeSimulator implements Simulator {
     /** Speed beyond which the state is considered to have exploded, m/s. */
     private static final double DIVERGED_SPEED = 200;
 
+    /**
+     * Angular speed beyond which the arm is considered to have exploded, rad/s, checked on the
+     * bodies of at least {@link #SPIN_CHECKED_MASS}: the upper arm, the forearm and the palm. In
+     * seeded catch loops of every task they turn at most 146 rad/s (the palm, as a club drops;
+     * upper arm and forearm under 50), and an unpowered arm falling onto its joint limits whips
+     * its palm to about 1,300 rad/s (upper arm and forearm about 300). An arm driven into its
+     * shoulder's Euler singularity spun its upper arm past 2,000 rad/s with nothing touching it,
+     * 70 ms before it flung the can away at 78 m/s (docs/flip-experiments.md, fifteenth session). Finger phalanges (3-30 g) are left out:
+     * unpowered, they flop against their limits at over 1,000 rad/s.
+     */
+    static final double DIVERGED_SPIN = 2000;
+
+    /** Bodies at least this heavy (kg) are checked against {@link #DIVERGED_SPIN}. */
+    static final double SPIN_CHECKED_MASS = 0.1;
+
     private enum Kind { HAND, OBJECT, GROUND, BOX }
 
     /** What a geometry belongs to; stored as the geom's user data. */
@@ -100,6 +115,8 @@ public final class OdeSimulator implements Simulator {
     private final DPlane ground;
     private final DBody torso;
     private final DBody[] bodies;
+    /** Indices of the bodies checked against {@link #DIVERGED_SPIN}. */
+    private final int[] spinChecked;
     private final Vec3[] centreOfMass;
     private final DAMotorJoint[] limitMotors;
     private final double[] q;
@@ -172,6 +189,7 @@ public final class OdeSimulator implements Simulator {
         torso = OdeHelper.createBody(world);
         torso.setKinematic();
         bodies = new DBody[n];
+        spinChecked = model.bodies().stream().filter(b -> b.mass().mass() >= SPIN_CHECKED_MASS).mapToInt(Body::index).toArray();
         centreOfMass = new Vec3[n];
         List<DGeom> geoms = new ArrayList<>();
         List<double[]> bounds = new ArrayList<>();
@@ -535,6 +553,14 @@ public final class OdeSimulator implements Simulator {
         for (int i = 0; i < q.length; i++) {
             if (!Double.isFinite(q[i]) || !Double.isFinite(qd[i])) {
                 throw new SimulationDiverged("joint " + model.dofs().get(i).name() + " is not finite at t = " + time + " s");
+            }
+        }
+        for (int b : spinChecked) {
+            double wx = angularVels[3 * b], wy = angularVels[3 * b + 1], wz = angularVels[3 * b + 2];
+            double spin2 = wx * wx + wy * wy + wz * wz;
+            if (spin2 > DIVERGED_SPIN * DIVERGED_SPIN) {
+                throw new SimulationDiverged("body " + model.bodies().get(b).name() + " spins at " + Math.sqrt(spin2)
+                        + " rad/s at t = " + time + " s");
             }
         }
         if (object != null) {
