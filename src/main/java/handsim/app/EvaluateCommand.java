@@ -513,25 +513,16 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("drops", runs.stream().filter(FlipRun::dropped).count());
         out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
         out.put("unflipped_endings", runs.stream().filter(r -> r.unflipped(loops)).count());
-        List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(runs.stream().flatMap(r -> r.loops().stream()).toList());
+        List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
+        List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.RotationBin b : bins) {
-            ObjectNode o = byRotation.addObject();
-            o.put("from_deg", roundedDegrees(b.from()));
-            o.put("to_deg", roundedDegrees(b.to()));
-            o.put("throws", b.throwsMade());
-            o.put("successes", b.successes());
+            putBin(byRotation, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(runs.stream().flatMap(r -> r.loops().stream()).toList());
+        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(allLoops);
         ArrayNode byArrival = out.putArray("throws_by_arrival_tilt");
         for (FlipTask.ArrivalBin b : arrivals) {
-            ObjectNode o = byArrival.addObject();
-            o.put("from_deg", roundedDegrees(b.from()));
-            o.put("to_deg", roundedDegrees(b.to()));
-            o.put("throws", b.throwsMade());
-            o.put("successes", b.successes());
-            o.put("drops", b.drops());
-            o.put("standing", b.standing());
+            putBin(byArrival, b.from(), b.to(), b.throwsMade(), b.successes()).put("drops", b.drops()).put("standing", b.standing());
         }
         ArrayNode eps = out.putArray("episodes");
         for (FlipRun r : runs) {
@@ -569,6 +560,16 @@ final class EvaluateCommand implements Callable<Integer> {
             plotByArrival(arrivals, arrivalPlot);
             System.out.println("wrote " + arrivalPlot);
         }
+    }
+
+    /** Appends a bin of throws between two angles (rad, written in degrees) to a JSON array; returns it for more fields. */
+    private static ObjectNode putBin(ArrayNode array, double from, double to, int throwsMade, int successes) {
+        ObjectNode o = array.addObject();
+        o.put("from_deg", roundedDegrees(from));
+        o.put("to_deg", roundedDegrees(to));
+        o.put("throws", throwsMade);
+        o.put("successes", successes);
+        return o;
     }
 
     /** Radians in degrees to 1e-6 (a bin edge of 11 pi / 4 reads 495, not 494.99999999999994). */
