@@ -3,7 +3,6 @@ package handsim.app;
 import handsim.model.HandModel;
 import handsim.sim.Simulator;
 import handsim.task.Goal;
-import handsim.task.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.HeldBallScenario;
 import handsim.task.HeldBallScene;
@@ -103,13 +102,8 @@ final class RenderCommand implements Callable<Integer> {
             Simulator sim = Runtime.simulator(model, Runtime.simConfig());
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
-        ViewerConfig.Goals g = viewerConfig.goals();
-        ShippedScenes catalog = new ShippedScenes(HeightGoals.fixed(throwHeight),
-                new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
         SceneSetup wanted = new SceneSetup(task == null ? "height" : task, object, controller == null ? "nominal" : controller, seed);
-        catalog.validate(wanted);
-        SwitchingScene scene = new SwitchingScene(catalog, wanted);
-        scene.openingNotes().forEach(n -> System.out.println("handsim render: " + n));
+        SwitchingScene scene = ViewerSession.scene("render", wanted, HeightGoals.fixed(throwHeight), policy, viewerConfig);
         SceneSetup shown = scene.shown();
         System.out.println("handsim render: " + shown.task() + " task, " + shown.object() + ", " + shown.controller()
                 + " controller, seed " + shown.seed());

@@ -26,6 +26,20 @@ final class ViewerSession {
         return ViewerConfig.load(Home.resolve("configs/viewer.json"));
     }
 
+    /**
+     * The scene of {@link ShippedScenes} for {@code wanted} (a name it does not list is refused),
+     * its fallback notes printed as {@code handsim COMMAND: ...}: what {@code view} shows and
+     * {@code render} draws.
+     */
+    static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, Path policy, ViewerConfig config) {
+        ViewerConfig.Goals g = config.goals();
+        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
+        catalog.validate(wanted);
+        SwitchingScene scene = new SwitchingScene(catalog, wanted);
+        scene.openingNotes().forEach(n -> System.out.println("handsim " + command + ": " + n));
+        return scene;
+    }
+
     /** True when an X display is set (GLFW needs one). */
     static boolean hasDisplay() {
         String d = System.getenv("DISPLAY");
@@ -43,12 +57,8 @@ final class ViewerSession {
                     + "(scripts/handsim demo runs headless; view --benchmark-frames N runs under xvfb-run)");
         }
         ViewerConfig config = config();
-        ViewerConfig.Goals g = config.goals();
-        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
-        catalog.validate(wanted);
         String prefix = "handsim " + command + ": ";
-        SwitchingScene scene = new SwitchingScene(catalog, wanted);
-        scene.openingNotes().forEach(n -> System.out.println(prefix + n));
+        SwitchingScene scene = scene(command, wanted, goals, policy, config);
         ViewerConfig.Pacing p = config.pacing();
         SceneSetup shown = scene.shown();
         String title = "handsim — " + shown.task() + " task, " + shown.object() + ", " + shown.controller() + " controller";
