@@ -67,6 +67,17 @@ public interface Simulator extends AutoCloseable {
         objectState().position().into(out, 0);
     }
 
+    /** The whole state of the world now, to go on from later or in a twin world ({@link #restoreState}). */
+    WorldState captureState();
+
+    /**
+     * Puts the world in {@code state}, captured from this simulator or from another of the same
+     * model and config: the arm, the object (spawned anew), the boxes, the torques, the clock and
+     * the engine's random generator. The world then steps on exactly as the one it was captured
+     * from. The contact record starts empty.
+     */
+    void restoreState(WorldState state);
+
     /** Adds a fixed box (the target of the box task); it collides with the object only. */
     void addStaticBox(Vec3 center, Vec3 size);
 

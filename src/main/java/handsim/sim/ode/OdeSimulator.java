@@ -18,8 +18,10 @@ import handsim.sim.SimulationDiverged;
 import handsim.sim.StepAccounting;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
+import handsim.sim.WorldState;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
@@ -46,6 +48,8 @@ import org.ode4j.ode.DWorld;
 import org.ode4j.ode.OdeConfig;
 import org.ode4j.ode.OdeConstants;
 import org.ode4j.ode.OdeHelper;
+import org.ode4j.ode.internal.DxBody;
+import org.ode4j.ode.internal.Rotation;
 
 /**
  * The arm+hand and a thrown object in an ode4j world, stepped with quickStep at the configured
@@ -443,6 +447,77 @@ public final class OdeSimulator implements Simulator {
     }
 
     @Override
+    public WorldState captureState() {
+        double[] state = new double[WorldState.PER_BODY * bodies.length];
+        for (int b = 0; b < bodies.length; b++) {
+            writeBody(bodies[b], state, WorldState.PER_BODY * b);
+        }
+        Optional<RigidState> o = object == null ? Optional.empty() : Optional.of(objectState());
+        return new WorldState(time, steps, state, tau, Optional.ofNullable(objectSpec), o, boxSpecs, DMisc.dRandGetSeed());
+    }
+
+    @Override
+    public void restoreState(WorldState s) {
+        double[] state = s.bodies();
+        if (state.length != WorldState.PER_BODY * bodies.length || s.torques().length != tau.length) {
+            throw new IllegalArgumentException("the state is of a model with " + state.length / WorldState.PER_BODY
+                    + " bodies and " + s.torques().length + " DOFs, this world's has " + bodies.length + " and " + tau.length);
+        }
+        reset(q, s.randomSeed()); // the object and boxes go, the generator takes the captured seed
+        for (int b = 0; b < bodies.length; b++) {
+            int i = WorldState.PER_BODY * b;
+            restoreBody(bodies[b], new RigidState(new Vec3(state[i], state[i + 1], state[i + 2]),
+                    new Quat(state[i + 3], state[i + 4], state[i + 5], state[i + 6]),
+                    new Vec3(state[i + 7], state[i + 8], state[i + 9]), new Vec3(state[i + 10], state[i + 11], state[i + 12])));
+        }
+        for (WorldSnapshot.StaticBox box : s.boxes()) {
+            addStaticBox(box.center(), box.size());
+        }
+        if (s.objectSpec().isPresent()) {
+            spawnObject(s.objectSpec().get(), s.object().get());
+            restoreBody(object, s.object().get());
+        }
+        System.arraycopy(s.torques(), 0, tau, 0, tau.length);
+        time = s.time();
+        steps = s.steps();
+        contacts.clear(time);
+        updateJointState();
+    }
+
+    private static void writeBody(DBody b, double[] out, int at) {
+        DVector3C p = b.getPosition();
+        DQuaternionC r = b.getQuaternion();
+        DVector3C v = b.getLinearVel();
+        DVector3C w = b.getAngularVel();
+        double[] values = {p.get0(), p.get1(), p.get2(), r.get0(), r.get1(), r.get2(), r.get3(),
+            v.get0(), v.get1(), v.get2(), w.get0(), w.get1(), w.get2()};
+        System.arraycopy(values, 0, out, at, values.length);
+    }
+
+    private static void setBody(DBody body, RigidState s) {
+        Vec3 p = s.position();
+        Quat r = s.orientation();
+        body.setPosition(p.x(), p.y(), p.z());
+        body.setQuaternion(new DQuaternion(r.w(), r.x(), r.y(), r.z()));
+        body.setLinearVel(s.velocity().x(), s.velocity().y(), s.velocity().z());
+        body.setAngularVel(s.angularVelocity().x(), s.angularVelocity().y(), s.angularVelocity().z());
+    }
+
+    /**
+     * {@link #setBody} to a state captured from a stepped world, bit for bit. ODE's setQuaternion
+     * normalises the quaternion again, which moves a stepped (already normalised) one by an ulp;
+     * so the engine's own quaternion is then set to the captured one and the rotation matrix
+     * derived from it as a step derives it.
+     */
+    private static void restoreBody(DBody body, RigidState s) {
+        setBody(body, s); // also tells the body's geoms that it moved
+        DxBody engineBody = (DxBody) body;
+        Quat r = s.orientation();
+        engineBody._q.set(r.w(), r.x(), r.y(), r.z());
+        Rotation.dRfromQ(engineBody._posr.Rw(), engineBody._q);
+    }
+
+    @Override
     public void readJoints(double[] angles, double[] rates) {
         System.arraycopy(q, 0, angles, 0, q.length);
         System.arraycopy(qd, 0, rates, 0, qd.length);
@@ -714,7 +789,7 @@ public final class OdeSimulator implements Simulator {
             objectBounds.add(boundingSphere(s, Vec3.ZERO));
         }
         objectSpec = spec;
-        setObjectState(state);
+        setBody(object, state);
         // contact ERP/CFM depend on the two masses (sec. 4.1); static geometry counts as 0 kg
         double m = spec.mass().mass();
         for (Body b : model.bodies()) {
@@ -723,15 +798,6 @@ public final class OdeSimulator implements Simulator {
         }
         staticErp = config.contactErp(m, 0);
         staticCfm = config.contactCfm(m, 0);
-    }
-
-    private void setObjectState(RigidState s) {
-        Vec3 p = s.position();
-        Quat r = s.orientation();
-        object.setPosition(p.x(), p.y(), p.z());
-        object.setQuaternion(new DQuaternion(r.w(), r.x(), r.y(), r.z()));
-        object.setLinearVel(s.velocity().x(), s.velocity().y(), s.velocity().z());
-        object.setAngularVel(s.angularVelocity().x(), s.angularVelocity().y(), s.angularVelocity().z());
     }
 
     private void removeObject() {
