@@ -18,6 +18,7 @@ import handsim.sim.SimConfig;
 import handsim.task.BoxTask;
 import handsim.task.BoxTests;
 import handsim.task.CatchEvaluation;
+import handsim.task.ThrowPlanner;
 import handsim.task.EpisodeResult;
 import handsim.task.FlipTask;
 import handsim.task.HeightErrors;
@@ -30,7 +31,9 @@ import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import handsim.sim.Simulator;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -122,6 +125,10 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "the launch velocity nudge of --copies (m/s, default: ${DEFAULT-VALUE})")
     double nudge;
 
+    @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
+            + "world first (handsim.task.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
+    boolean plan;
+
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
     Path json;
 
@@ -202,6 +209,9 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         if (copies != null && csv != null) {
             throw new IllegalArgumentException("--csv goes without --copies (a sensitivity run writes its figures with --json)");
+        }
+        if (plan && (!task.equals("flip") || copies != null)) {
+            throw new IllegalArgumentException("--plan goes with the flip task and without --copies");
         }
         if (!(nudge > 0 && nudge <= 1)) {
             throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + nudge);
@@ -426,6 +436,29 @@ final class EvaluateCommand implements Callable<Integer> {
         }
     }
 
+    /** The planner's settings and work over all workers, printed and in the JSON. */
+    private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, List<CatchEvaluation> planned) {
+        int decisions = 0, tries = 0, unsolved = 0, mispredicted = 0;
+        for (CatchEvaluation e : planned) {
+            ThrowPlanner.Stats s = e.plannerStats();
+            decisions += s.decisions();
+            tries += s.tries();
+            unsolved += s.unsolved();
+            mispredicted += s.mispredicted();
+        }
+        ObjectNode o = out.putObject("planner");
+        o.put("candidates", planning.candidates());
+        o.put("spread", planning.spread());
+        o.put("good_alignment", planning.goodAlignment());
+        o.put("decisions", decisions);
+        o.put("tries", tries);
+        o.put("unsolved", unsolved);
+        o.put("mispredicted", mispredicted);
+        System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw, at most %d); for %d of them no try "
+                + "succeeded; %d live throws differed from their try in the twin%n", decisions, tries,
+                decisions == 0 ? 0.0 : (double) tries / decisions, planning.candidates(), unsolved, mispredicted);
+    }
+
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */
     private static void putRate(ObjectNode node, String field, List<BoxTests.Test> tests) {
         if (tests.isEmpty()) {
@@ -475,18 +508,36 @@ final class EvaluateCommand implements Callable<Integer> {
         ObjectSpec spec = Runtime.object(object);
         Tasks tasks = Runtime.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
-        List<FlipRun> runs = rollouts.run(episodes, sim -> {
+        ThrowPlanner.Config planning = plan ? Runtime.plannerConfig() : null;
+        List<CatchEvaluation> planned = Collections.synchronizedList(new ArrayList<>());
+        List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
+        List<FlipRun> runs;
+        try {
+            runs = rollouts.run(episodes, sim -> {
             FlipTask t = (FlipTask) tasks.create("flip", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+            if (planning != null) {
+                Simulator twin = Runtime.twinSimulator(sim);
+                twins.add(twin);
+                evaluation = evaluation.planned(planning, twin);
+                planned.add(evaluation);
+            }
+            CatchEvaluation worker = evaluation;
             return i -> {
-                List<LoopRecord> made = evaluation.runWhileSuccessful(sim, seed + i, loops);
+                List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops);
                 int flips = made.stream().mapToInt(t::flips).sum();
                 LoopRecord last = made.get(made.size() - 1);
-                return new FlipRun(seed + i, evaluation.successesInARow(made), flips, made.size() - 1, !last.caught(),
+                return new FlipRun(seed + i, worker.successesInARow(made), flips, made.size() - 1, !last.caught(),
                         last.index() > 0 && last.caught() && !t.properCatch(last), made);
             };
-        }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
+            }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
+                    r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
+        } finally {
+            twins.forEach(Simulator::close);
+        }
+        if (planning != null) {
+            putPlannerStats(out, planning, planned);
+        }
         if (csv != null) {
             StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
                     + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward\n");

@@ -14,6 +14,7 @@ import handsim.sim.ode.OdeSimulator;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.task.CatchEvaluation;
+import handsim.task.ThrowPlanner;
 import handsim.task.EpisodeLimits;
 import handsim.kin.Kinematics;
 import handsim.math.Vec3;
@@ -88,6 +89,16 @@ final class Runtime {
     }
 
     /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
+    /** {@code configs/planner.json}. */
+    static ThrowPlanner.Config plannerConfig() {
+        return ThrowPlanner.Config.parse(Json.load(Home.resolve("configs/planner.json")));
+    }
+
+    /** A twin of {@code sim} for a planner: the same model and config, on an engine of its own. */
+    static Simulator twinSimulator(Simulator sim) {
+        return IsolatedEngine.simulator(sim.model(), sim.config());
+    }
+
     static Rollouts rollouts(HandModel model, SimConfig config, int workers) {
         return new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config));
     }

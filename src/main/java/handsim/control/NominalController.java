@@ -63,6 +63,11 @@ public final class NominalController {
         return config;
     }
 
+    /** The object this controller catches (its grasp and its predicted flight are planned for it). */
+    public ObjectSpec object() {
+        return object;
+    }
+
     /** The palm centre's frame in the neutral pose: where MIDDLE ends and THROW starts. */
     public Frame neutralPalm() {
         return neutralPalm;

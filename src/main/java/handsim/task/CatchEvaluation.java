@@ -2,6 +2,7 @@ package handsim.task;
 
 import handsim.control.ControllerConfig;
 import handsim.control.NominalController;
+import handsim.control.Observation;
 import handsim.control.PdController;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
@@ -32,6 +33,13 @@ public final class CatchEvaluation {
     private final ObjectSpec object;
     private final ThrowPolicy throwPolicy;
     private final ThrowTask task;
+    /** Non-null when every throw is planned in a twin world ({@link #planned}). */
+    private ThrowPlanner.Config planning;
+    private Simulator twin;
+    private ThrowPlanner.Stats planned = new ThrowPlanner.Stats(0, 0, 0, 0);
+    /** The running episode's planner, and the throw its controller makes next; null without planning. */
+    private ThrowPlanner planner;
+    private ChosenThrow liveThrow;
 
     /** {@code throwPolicy} chooses the throws for {@code task}'s goals. */
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
@@ -48,6 +56,25 @@ public final class CatchEvaluation {
     public static CatchEvaluation nominal(ControllerConfig controllerConfig, EpisodeLimits limits,
             LaunchDistribution launches, ObjectSpec object, ThrowTask task) {
         return new CatchEvaluation(controllerConfig, limits, launches, object, task, obs -> task.nominalThrow());
+    }
+
+    /**
+     * This evaluation with every throw chosen by a {@link ThrowPlanner}: the throw policy proposes,
+     * the planner tries it and {@code config.candidates() - 1} variations in {@code twin}, a
+     * simulator of the same model and config with an engine of its own, and the hand makes the
+     * best. The caller closes {@code twin}.
+     */
+    public CatchEvaluation planned(ThrowPlanner.Config config, Simulator twin) {
+        CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
+        ThrowPlanner.requirePlannable(task);
+        e.planning = config;
+        e.twin = twin;
+        return e;
+    }
+
+    /** What the planner did over every episode so far (zeros without planning). */
+    public ThrowPlanner.Stats plannerStats() {
+        return planner == null ? planned : planned.plus(planner.stats());
     }
 
     /** The task whose goals the throws aim at (its episode state is shared by every episode this evaluation starts). */
@@ -69,21 +96,41 @@ public final class CatchEvaluation {
     public EpisodeResult run(Simulator sim, long seed, Vec3 launchNudge, int maxLoops, LoopListener listener) {
         CatchThrowEpisode episode = start(sim, seed, launchNudge);
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
-            LoopRecord r = tick(episode, seed);
-            if (r != null && listener != null) {
-                listener.onLoop(seed, r);
+            for (LoopRecord r : advance(episode, seed)) {
+                if (listener != null) {
+                    listener.onLoop(seed, r);
+                }
             }
         }
         return episode.result(seed);
     }
 
-    /** One tick; a divergence names the episode's seed and loop, so the run that failed can be replayed. */
-    private static LoopRecord tick(CatchThrowEpisode episode, long seed) {
+    /**
+     * Runs the episode on and returns the loops finished meanwhile: one tick, or with planning
+     * the planned throw made and everything up to the next throw's decision. A divergence names
+     * the episode's seed and loop, so the run that failed can be replayed.
+     */
+    private List<LoopRecord> advance(CatchThrowEpisode episode, long seed) {
+        int before = episode.loops().size();
         try {
-            return episode.tick();
+            if (planner == null) {
+                episode.tick();
+            } else {
+                Observation waiting = episode.waiting();
+                if (waiting != null) {
+                    long variations = seed ^ 0x9E3779B97F4A7C15L * before;
+                    liveThrow.set(planner.choose(episode, throwPolicy.decide(waiting), variations));
+                    episode.resume();
+                }
+                episode.runUntilThrowDue();
+                if (waiting != null && episode.loops().size() > before) {
+                    planner.check(episode.loops().get(before));
+                }
+            }
         } catch (SimulationDiverged e) {
             throw new SimulationDiverged("episode of seed " + seed + ", loop " + episode.loops().size() + ": " + e.getMessage());
         }
+        return List.copyOf(episode.loops().subList(before, episode.loops().size()));
     }
 
     /**
@@ -94,15 +141,12 @@ public final class CatchEvaluation {
     public List<LoopRecord> runWhileSuccessful(Simulator sim, long seed, int maxThrows) {
         CatchThrowEpisode episode = start(sim, seed);
         int inARow = 0;
-        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows) {
-            LoopRecord r = tick(episode, seed);
-            if (r == null) {
-                continue;
+        boolean failed = false;
+        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows && !failed) {
+            for (LoopRecord r : advance(episode, seed)) {
+                failed = r.index() == 0 ? !r.caught() : !task.success(r);
+                inARow += failed || r.index() == 0 ? 0 : 1;
             }
-            if (r.index() == 0 ? !r.caught() : !task.success(r)) {
-                break;
-            }
-            inARow += r.index() == 0 ? 0 : 1;
         }
         return List.copyOf(episode.loops());
     }
@@ -134,7 +178,7 @@ public final class CatchEvaluation {
         SplittableRandom rng = new SplittableRandom(seed);
         ObjectSpec thrown = object.randomized(rng);
         NominalController controller = new NominalController(sim.model(), controllerConfig, thrown,
-                throwPolicy, sim.config().gravity());
+                planning == null ? throwPolicy : plan(thrown), sim.config().gravity());
         RigidState sampled = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
         RigidState launch = launchNudge.equals(Vec3.ZERO) ? sampled
@@ -143,5 +187,18 @@ public final class CatchEvaluation {
                 controller, task, limits);
         episode.start(thrown, launch, seed);
         return episode;
+    }
+
+    /** A planner for an episode with {@code thrown}, with its twin episode; the throw policy of the live controller. */
+    private ThrowPolicy plan(ObjectSpec thrown) {
+        if (planner != null) {
+            planned = planned.plus(planner.stats());
+        }
+        ChosenThrow twinThrow = new ChosenThrow();
+        CatchThrowEpisode twinEpisode = new CatchThrowEpisode(twin, new PdController(twin.model(), controllerConfig.pd()),
+                new NominalController(twin.model(), controllerConfig, thrown, twinThrow, twin.config().gravity()), task, limits);
+        planner = new ThrowPlanner(planning, task, task.throwSpace(controllerConfig.throwSpace()), twinEpisode, twinThrow);
+        liveThrow = new ChosenThrow();
+        return liveThrow;
     }
 }

@@ -14,6 +14,7 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
+import handsim.sim.WorldState;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -52,7 +53,7 @@ public final class CatchThrowEpisode {
     private long touchedSinceTick;
     private List<WorldSnapshot.StaticBox> boxes = List.of();
     private Vec3 longAxis;
-    private final FlightTracker flight;
+    private FlightTracker flight;
     private double objectRadius;
     /** The observation the episode stopped at, waiting for the throw to be chosen; null when not waiting. */
     private Observation waiting;
@@ -131,6 +132,106 @@ public final class CatchThrowEpisode {
     /** The episode so far, as a result. */
     public EpisodeResult result(long seed) {
         return new EpisodeResult(seed, loops, status);
+    }
+
+    /**
+     * Everything the episode needs to go on from a tick: the world, the controller's state, the
+     * loops so far and the statistics of the loop in progress. Not the task's goal: restore into
+     * an episode whose task stands at the same goal (the flip task has one for every throw).
+     */
+    public static final class Checkpoint {
+        private final WorldState world;
+        private final ControllerState state;
+        private final double[] targets;
+        private final double peakTorqueRatio;
+        private final List<LoopRecord> loops;
+        private final Status status;
+        private final long touchedSinceTick;
+        private final Observation waiting;
+        private final FlightTracker flight;
+        private final double loopStart, apex, maxDepth, maxLimitExcess, boxDistance, catchTilt, loopGoal;
+        private final boolean boxHit;
+        private final Vec3 landing;
+        private final ThrowParameters loopThrow;
+
+        private Checkpoint(CatchThrowEpisode e) {
+            world = e.sim.captureState();
+            state = e.state.copy();
+            targets = e.loop.targets().clone();
+            peakTorqueRatio = e.loop.peakTorqueRatio();
+            loops = List.copyOf(e.loops);
+            status = e.status;
+            touchedSinceTick = e.touchedSinceTick;
+            waiting = e.waiting;
+            flight = e.flight.copy();
+            loopStart = e.loopStart;
+            apex = e.apex;
+            maxDepth = e.maxDepth;
+            maxLimitExcess = e.maxLimitExcess;
+            boxDistance = e.boxDistance;
+            catchTilt = e.catchTilt;
+            loopGoal = e.loopGoal;
+            boxHit = e.boxHit;
+            landing = e.landing;
+            loopThrow = e.loopThrow;
+        }
+
+        /** The world as it was. */
+        public WorldState world() {
+            return world;
+        }
+
+        /** Loops finished before the checkpoint. */
+        public int loopCount() {
+            return loops.size();
+        }
+    }
+
+    /** The episode now, to go on from later or in a twin episode ({@link #restore}). */
+    public Checkpoint checkpoint() {
+        return new Checkpoint(this);
+    }
+
+    /**
+     * Puts this episode, its world and its controller where {@code c} was taken, from this
+     * episode or another of the same model, controller settings and object; it then runs on
+     * exactly as that episode did (the world steps on bit for bit, {@link Simulator#restoreState}).
+     */
+    public void restore(Checkpoint c) {
+        ObjectSpec object = c.world.objectSpec().orElseThrow(() -> new IllegalArgumentException("the checkpoint has no object"));
+        if (!object.equals(controller.object())) {
+            throw new IllegalArgumentException("the checkpoint holds a " + object.name() + " of " + object.mass().mass()
+                    + " kg, this episode's controller catches a " + controller.object().name() + " of "
+                    + controller.object().mass().mass() + " kg: restore into an episode made for the same object");
+        }
+        sim.restoreState(c.world);
+        boxes = c.world.boxes();
+        longAxis = object.longAxis().orElse(null);
+        objectRadius = object.boundingRadius();
+        state = c.state.copy();
+        System.arraycopy(c.targets, 0, loop.targets(), 0, c.targets.length);
+        loop.restorePeakTorqueRatio(c.peakTorqueRatio);
+        loops.clear();
+        loops.addAll(c.loops);
+        status = c.status;
+        touchedSinceTick = c.touchedSinceTick;
+        waiting = c.waiting;
+        flight = c.flight.copy();
+        loopStart = c.loopStart;
+        apex = c.apex;
+        maxDepth = c.maxDepth;
+        maxLimitExcess = c.maxLimitExcess;
+        boxDistance = c.boxDistance;
+        catchTilt = c.catchTilt;
+        loopGoal = c.loopGoal;
+        boxHit = c.boxHit;
+        landing = c.landing;
+        loopThrow = c.loopThrow;
+    }
+
+    /** The observation the episode stopped at to wait for a throw ({@link #runUntilThrowDue}), or null when not waiting. */
+    public Observation waiting() {
+        return waiting;
     }
 
     /** The observation the controller sees now. */

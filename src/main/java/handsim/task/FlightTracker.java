@@ -29,6 +29,21 @@ final class FlightTracker {
         this.up = up.normalized();
     }
 
+    /** An independent tracker at the same point of the same flight. */
+    FlightTracker copy() {
+        return new FlightTracker(this);
+    }
+
+    private FlightTracker(FlightTracker o) {
+        up = o.up;
+        stage = o.stage;
+        lastAxis = o.lastAxis;
+        rotation = o.rotation;
+        releaseSpin = o.releaseSpin;
+        catchPoint = o.catchPoint;
+        arrivalTilt = o.arrivalTilt;
+    }
+
     /** Starts following a new throw, not yet released. */
     void reset() {
         stage = Stage.BEFORE_RELEASE;

@@ -67,4 +67,9 @@ public final class ServoLoop {
     public void resetPeakTorqueRatio() {
         peakTorqueRatio = 0;
     }
+
+    /** Goes on from a peak recorded elsewhere (an episode restored from a checkpoint). */
+    void restorePeakTorqueRatio(double peak) {
+        peakTorqueRatio = peak;
+    }
 }
