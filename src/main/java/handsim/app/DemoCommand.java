@@ -72,7 +72,7 @@ final class DemoCommand implements Callable<Integer> {
         HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
         String controller = bestController(object);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, 0, null);
+            return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, false, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");

@@ -62,6 +62,10 @@ final class RenderCommand implements Callable<Integer> {
             + "policy shipped for the task and object)")
     Path policy;
 
+    @Option(names = "--plan", description = "flip: a throw planner chooses every throw, trying the controller's and variations "
+            + "of it in a twin world first (configs/planner.json)")
+    boolean plan;
+
     @Option(names = "--object", defaultValue = "sphere", description = "with --task or --controller: sphere, can, cuboid or club")
     String object;
 
@@ -97,13 +101,13 @@ final class RenderCommand implements Callable<Integer> {
     }
 
     private Scene scene(ViewerConfig viewerConfig) {
-        if (controller == null && task == null) {
+        if (controller == null && task == null && !plan) {
             HandModel model = Runtime.model(null);
             Simulator sim = Runtime.simulator(model, Runtime.simConfig());
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
         }
         SceneSetup wanted = new SceneSetup(task == null ? "height" : task, object, controller == null ? "nominal" : controller, seed);
-        SwitchingScene scene = ViewerSession.scene("render", wanted, HeightGoals.fixed(throwHeight), policy, viewerConfig);
+        SwitchingScene scene = ViewerSession.scene("render", wanted, HeightGoals.fixed(throwHeight), policy, plan, viewerConfig);
         SceneSetup shown = scene.shown();
         System.out.println("handsim render: " + shown.task() + " task, " + shown.object() + ", " + shown.controller()
                 + " controller, seed " + shown.seed());

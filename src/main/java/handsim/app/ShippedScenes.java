@@ -3,6 +3,7 @@ package handsim.app;
 import handsim.config.Home;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
+import handsim.sim.Simulator;
 import handsim.config.ConfigException;
 import handsim.control.ThrowPolicy;
 import handsim.task.CatchEvaluation;
@@ -42,16 +43,19 @@ final class ShippedScenes implements SceneCatalog {
     private final HeightGoals goals;
     private final HeightControl heightControl;
     private final Path policy;
+    private final boolean plan;
     private final List<String> objects;
 
     /**
      * {@code goals} are shared by every scene opened (moving the goal survives a switch of
-     * object); {@code policy} is the learned controller's file, or null.
+     * object); {@code policy} is the learned controller's file, or null; with {@code plan} a
+     * {@link handsim.task.ThrowPlanner} chooses the flip task's throws.
      */
-    ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy) {
+    ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, boolean plan) {
         this.goals = goals;
         this.heightControl = heightControl;
         this.policy = policy;
+        this.plan = plan;
         this.objects = listObjects();
     }
 
@@ -125,7 +129,15 @@ final class ShippedScenes implements SceneCatalog {
         }
         CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
                 Runtime.object(shown.object()), task, throwPolicy);
-        InteractiveScene scene = new CatchLoopScene(Runtime.simulator(model, simConfig), evaluation, shown.seed(), heightControl);
+        Simulator sim = Runtime.simulator(model, simConfig);
+        Simulator twin = null;
+        if (plan && task.goalSize() != 0) {
+            notes.add("the throw planner chooses the flip task's throws only: the " + task.name() + " task's are not planned");
+        } else if (plan) {
+            twin = Runtime.twinSimulator(sim);
+            evaluation = evaluation.planned(Runtime.plannerConfig(), twin);
+        }
+        InteractiveScene scene = new CatchLoopScene(sim, evaluation, shown.seed(), heightControl, twin);
         return new Opened(scene, shown, notes);
     }
 

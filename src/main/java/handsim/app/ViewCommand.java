@@ -30,6 +30,10 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file")
     Path policy;
 
+    @Option(names = "--plan", description = "flip: a throw planner chooses every throw, trying the controller's and variations "
+            + "of it in a twin world first (configs/planner.json); the scene pauses while it plans")
+    boolean plan;
+
     @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode (default: ${DEFAULT-VALUE})")
     long seed;
 
@@ -50,6 +54,6 @@ final class ViewCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
         }
         HeightGoals goals = DemoCommand.parseHeights(heights);
-        return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, benchmarkFrames, screenshot);
+        return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, plan, benchmarkFrames, screenshot);
     }
 }

@@ -29,11 +29,12 @@ final class ViewerSession {
     /**
      * The scene of {@link ShippedScenes} for {@code wanted} (a name it does not list is refused),
      * its fallback notes printed as {@code handsim COMMAND: ...}: what {@code view} shows and
-     * {@code render} draws.
+     * {@code render} draws. With {@code plan} a throw planner chooses the flip task's throws.
      */
-    static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, Path policy, ViewerConfig config) {
+    static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, Path policy, boolean plan, ViewerConfig config) {
         ViewerConfig.Goals g = config.goals();
-        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy);
+        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy,
+                plan);
         catalog.validate(wanted);
         SwitchingScene scene = new SwitchingScene(catalog, wanted);
         scene.openingNotes().forEach(n -> System.out.println("handsim " + command + ": " + n));
@@ -51,14 +52,15 @@ final class ViewerSession {
      * as fast as possible (then prints the mean frame rate and real-time factor); writes a
      * screenshot of the last frame to {@code screenshot} if given.
      */
-    static int open(String command, SceneSetup wanted, HeightGoals goals, Path policy, int benchmarkFrames, Path screenshot) {
+    static int open(String command, SceneSetup wanted, HeightGoals goals, Path policy, boolean plan, int benchmarkFrames,
+            Path screenshot) {
         if (!hasDisplay()) {
             throw new IllegalArgumentException("no X display (DISPLAY is not set): the viewer needs one "
                     + "(scripts/handsim demo runs headless; view --benchmark-frames N runs under xvfb-run)");
         }
         ViewerConfig config = config();
         String prefix = "handsim " + command + ": ";
-        SwitchingScene scene = scene(command, wanted, goals, policy, config);
+        SwitchingScene scene = scene(command, wanted, goals, policy, plan, config);
         ViewerConfig.Pacing p = config.pacing();
         SceneSetup shown = scene.shown();
         String title = "handsim — " + shown.task() + " task, " + shown.object() + ", " + shown.controller() + " controller";

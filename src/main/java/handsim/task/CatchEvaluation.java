@@ -40,6 +40,8 @@ public final class CatchEvaluation {
     /** The running episode's planner, and the throw its controller makes next; null without planning. */
     private ThrowPlanner planner;
     private ChosenThrow liveThrow;
+    /** The index of the loop whose throw was planned last (checked against the twin's when it ends). */
+    private int plannedLoop = -1;
 
     /** {@code throwPolicy} chooses the throws for {@code task}'s goals. */
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
@@ -72,6 +74,11 @@ public final class CatchEvaluation {
         return e;
     }
 
+    /** Whether every throw is chosen by a planner ({@link #planned}). */
+    public boolean isPlanned() {
+        return planning != null;
+    }
+
     /** What the planner did over every episode so far (zeros without planning). */
     public ThrowPlanner.Stats plannerStats() {
         return planner == null ? planned : planned.plus(planner.stats());
@@ -96,41 +103,41 @@ public final class CatchEvaluation {
     public EpisodeResult run(Simulator sim, long seed, Vec3 launchNudge, int maxLoops, LoopListener listener) {
         CatchThrowEpisode episode = start(sim, seed, launchNudge);
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() <= maxLoops) {
-            for (LoopRecord r : advance(episode, seed)) {
-                if (listener != null) {
-                    listener.onLoop(seed, r);
-                }
+            LoopRecord r = tick(episode, seed);
+            if (r != null && listener != null) {
+                listener.onLoop(seed, r);
             }
         }
         return episode.result(seed);
     }
 
     /**
-     * Runs the episode on and returns the loops finished meanwhile: one tick, or with planning
-     * the planned throw made and everything up to the next throw's decision. A divergence names
-     * the episode's seed and loop, so the run that failed can be replayed.
+     * One tick of an episode this evaluation started; returns the loop record finished in it, or
+     * null. With planning, a tick at a throw's decision chooses the throw ({@link ThrowPlanner})
+     * and begins it. A divergence names the episode's seed and loop, so the run that failed can
+     * be replayed.
      */
-    private List<LoopRecord> advance(CatchThrowEpisode episode, long seed) {
-        int before = episode.loops().size();
+    public LoopRecord tick(CatchThrowEpisode episode, long seed) {
         try {
             if (planner == null) {
-                episode.tick();
-            } else {
-                Observation waiting = episode.waiting();
-                if (waiting != null) {
-                    long variations = seed ^ 0x9E3779B97F4A7C15L * before;
-                    liveThrow.set(planner.choose(episode, throwPolicy.decide(waiting), variations));
-                    episode.resume();
-                }
-                episode.runUntilThrowDue();
-                if (waiting != null && episode.loops().size() > before) {
-                    planner.check(episode.loops().get(before));
-                }
+                return episode.tick();
             }
+            Observation waiting = episode.waiting();
+            if (waiting != null) {
+                plannedLoop = episode.loops().size();
+                long variations = seed ^ 0x9E3779B97F4A7C15L * plannedLoop;
+                liveThrow.set(planner.choose(episode, throwPolicy.decide(waiting), variations));
+                episode.resume();
+                return null;
+            }
+            LoopRecord r = episode.tickOrWait();
+            if (r != null && r.index() == plannedLoop) {
+                planner.check(r);
+            }
+            return r;
         } catch (SimulationDiverged e) {
             throw new SimulationDiverged("episode of seed " + seed + ", loop " + episode.loops().size() + ": " + e.getMessage());
         }
-        return List.copyOf(episode.loops().subList(before, episode.loops().size()));
     }
 
     /**
@@ -141,12 +148,15 @@ public final class CatchEvaluation {
     public List<LoopRecord> runWhileSuccessful(Simulator sim, long seed, int maxThrows) {
         CatchThrowEpisode episode = start(sim, seed);
         int inARow = 0;
-        boolean failed = false;
-        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows && !failed) {
-            for (LoopRecord r : advance(episode, seed)) {
-                failed = r.index() == 0 ? !r.caught() : !task.success(r);
-                inARow += failed || r.index() == 0 ? 0 : 1;
+        while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows) {
+            LoopRecord r = tick(episode, seed);
+            if (r == null) {
+                continue;
             }
+            if (r.index() == 0 ? !r.caught() : !task.success(r)) {
+                break;
+            }
+            inARow += r.index() == 0 ? 0 : 1;
         }
         return List.copyOf(episode.loops());
     }
@@ -199,6 +209,7 @@ public final class CatchEvaluation {
                 new NominalController(twin.model(), controllerConfig, thrown, twinThrow, twin.config().gravity()), task, limits);
         planner = new ThrowPlanner(planning, task, task.throwSpace(controllerConfig.throwSpace()), twinEpisode, twinThrow);
         liveThrow = new ChosenThrow();
+        plannedLoop = -1;
         return liveThrow;
     }
 }

@@ -18,6 +18,8 @@ import java.util.Map;
 public final class CatchLoopScene implements InteractiveScene {
 
     private final Simulator sim;
+    /** Closed with the scene besides {@link #sim} (a planner's twin world), or null. */
+    private final AutoCloseable alsoOwned;
     private final CatchEvaluation evaluation;
     private final HeightControl heightControl;
     private CatchThrowEpisode episode;
@@ -30,7 +32,13 @@ public final class CatchLoopScene implements InteractiveScene {
 
     /** Owns {@code sim} (closed with the scene) and starts the episode of {@code seed}. */
     public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl) {
+        this(sim, evaluation, seed, heightControl, null);
+    }
+
+    /** As above, also owning {@code alsoOwned} (the twin world of a {@link CatchEvaluation#planned} evaluation). */
+    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl, AutoCloseable alsoOwned) {
         this.sim = sim;
+        this.alsoOwned = alsoOwned;
         this.evaluation = evaluation;
         this.heightControl = heightControl;
         this.seed = seed;
@@ -47,7 +55,7 @@ public final class CatchLoopScene implements InteractiveScene {
             }
             LoopRecord r;
             try {
-                r = episode.tick();
+                r = evaluation.tick(episode, seed);
             } catch (SimulationDiverged e) {
                 restart("simulation diverged (" + e.getMessage() + "): new throw");
                 return;
@@ -180,6 +188,11 @@ public final class CatchLoopScene implements InteractiveScene {
                     : String.format(Locale.ROOT, ", came back %.0f deg out of the horizontal", Math.toDegrees(lastThrow.arrivalTilt()));
             s.put("last turn", String.format(Locale.ROOT, "%.0f deg in flight", Math.toDegrees(lastThrow.flightRotation())) + arrival);
         }
+        if (evaluation.isPlanned()) {
+            ThrowPlanner.Stats p = evaluation.plannerStats();
+            s.put("planner", String.format(Locale.ROOT, "%d throws chosen from %d tries in a twin world, %d with no successful try",
+                    p.decisions(), p.tries(), p.unsolved()));
+        }
         s.put("last", lastEvent);
         s.put("episode", "seed " + seed + " (" + episodes + " so far)");
         s.put("t", String.format(Locale.ROOT, "%.2f s", sim.time()));
@@ -189,5 +202,12 @@ public final class CatchLoopScene implements InteractiveScene {
     @Override
     public void close() {
         sim.close();
+        if (alsoOwned != null) {
+            try {
+                alsoOwned.close();
+            } catch (Exception e) {
+                throw new IllegalStateException("cannot close the planner's twin world", e);
+            }
+        }
     }
 }

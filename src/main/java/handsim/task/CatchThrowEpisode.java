@@ -277,27 +277,38 @@ public final class CatchThrowEpisode {
      */
     public Observation runUntilThrowDue() {
         requireRunning();
-        if (waiting != null) {
-            return waiting;
-        }
-        while (true) {
-            if (advancePhysics() != null) {
-                return null;
-            }
-            Observation obs = takeObservation();
-            if (controller.throwDue(obs, state)) {
-                judgeCatch(obs);
-                if (status != Status.RUNNING) {
-                    return null;
-                }
-                waiting = obs;
-                return obs;
-            }
-            react(obs);
+        while (waiting == null) {
+            tickOrWait();
             if (status != Status.RUNNING) {
                 return null;
             }
         }
+        return waiting;
+    }
+
+    /**
+     * One tick as {@link #tick}, except that when a throw is due the episode judges the catch and
+     * stops to wait for the throw ({@link #waiting}) instead of asking the throw policy; {@link
+     * #resume} goes on. Returns the loop record finished during this tick, or null.
+     */
+    public LoopRecord tickOrWait() {
+        requireRunning();
+        if (waiting != null) {
+            throw new IllegalStateException("the episode is waiting for a throw: resume it first");
+        }
+        LoopRecord dropped = advancePhysics();
+        if (dropped != null) {
+            return dropped;
+        }
+        Observation obs = takeObservation();
+        if (controller.throwDue(obs, state)) {
+            LoopRecord judged = judgeCatch(obs);
+            if (status == Status.RUNNING) {
+                waiting = obs;
+            }
+            return judged;
+        }
+        return react(obs);
     }
 
     /** Goes on from {@link #runUntilThrowDue}: the controller asks its throw policy and begins the THROW. */
