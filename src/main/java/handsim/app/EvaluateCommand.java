@@ -450,13 +450,16 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("candidates", planning.candidates());
         o.put("spread", planning.spread());
         o.put("good_alignment", planning.goodAlignment());
+        o.put("wider_candidates", planning.widerCandidates());
+        o.put("wider_spread", planning.widerSpread());
         o.put("decisions", decisions);
         o.put("tries", tries);
         o.put("unsolved", unsolved);
         o.put("mispredicted", mispredicted);
         System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw, at most %d); for %d of them no try "
                 + "succeeded; %d live throws differed from their try in the twin%n", decisions, tries,
-                decisions == 0 ? 0.0 : (double) tries / decisions, planning.candidates(), unsolved, mispredicted);
+                decisions == 0 ? 0.0 : (double) tries / decisions, planning.candidates() + planning.widerCandidates(), unsolved,
+                mispredicted);
     }
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */

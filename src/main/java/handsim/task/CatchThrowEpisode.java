@@ -57,18 +57,8 @@ public final class CatchThrowEpisode {
     private double objectRadius;
     /** The observation the episode stopped at, waiting for the throw to be chosen; null when not waiting. */
     private Observation waiting;
-    // statistics of the loop in progress
-    private double loopStart;
-    private double apex;
-    private double maxDepth;
-    private double maxLimitExcess;
-    private boolean boxHit;
-    private double boxDistance;
-    private Vec3 landing;
-    /** The judged catch's tilt of the long axis out of the palm plane (see {@link LoopRecord#catchTilt}). */
-    private double catchTilt = Double.NaN;
-    private ThrowParameters loopThrow;
-    private double loopGoal = Double.NaN;
+    /** Statistics of the loop in progress. */
+    private LoopProgress current = new LoopProgress();
 
     /** {@code task} sets each throw's goal; the controller's throw policy reads it. */
     public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, ThrowTask task,
@@ -121,7 +111,7 @@ public final class CatchThrowEpisode {
 
     /** The apex height the throw now in progress aims at (m; NaN before the first throw or without a height goal). */
     public double throwGoal() {
-        return loopGoal;
+        return current.loopGoal;
     }
 
     /** Finished loops, in order. */
@@ -149,10 +139,7 @@ public final class CatchThrowEpisode {
         private final long touchedSinceTick;
         private final Observation waiting;
         private final FlightTracker flight;
-        private final double loopStart, apex, maxDepth, maxLimitExcess, boxDistance, catchTilt, loopGoal;
-        private final boolean boxHit;
-        private final Vec3 landing;
-        private final ThrowParameters loopThrow;
+        private final LoopProgress current;
 
         private Checkpoint(CatchThrowEpisode e) {
             world = e.sim.captureState();
@@ -164,16 +151,7 @@ public final class CatchThrowEpisode {
             touchedSinceTick = e.touchedSinceTick;
             waiting = e.waiting;
             flight = e.flight.copy();
-            loopStart = e.loopStart;
-            apex = e.apex;
-            maxDepth = e.maxDepth;
-            maxLimitExcess = e.maxLimitExcess;
-            boxDistance = e.boxDistance;
-            catchTilt = e.catchTilt;
-            loopGoal = e.loopGoal;
-            boxHit = e.boxHit;
-            landing = e.landing;
-            loopThrow = e.loopThrow;
+            current = e.current.copy();
         }
 
         /** The world as it was. */
@@ -217,16 +195,7 @@ public final class CatchThrowEpisode {
         touchedSinceTick = c.touchedSinceTick;
         waiting = c.waiting;
         flight = c.flight.copy();
-        loopStart = c.loopStart;
-        apex = c.apex;
-        maxDepth = c.maxDepth;
-        maxLimitExcess = c.maxLimitExcess;
-        boxDistance = c.boxDistance;
-        catchTilt = c.catchTilt;
-        loopGoal = c.loopGoal;
-        boxHit = c.boxHit;
-        landing = c.landing;
-        loopThrow = c.loopThrow;
+        current = c.current.copy();
     }
 
     /** The observation the episode stopped at to wait for a throw ({@link #runUntilThrowDue}), or null when not waiting. */
@@ -332,12 +301,12 @@ public final class CatchThrowEpisode {
         for (int i = 0; i < periodSteps; i++) {
             loop.step();
             touchedSinceTick |= sim.handContacts().bodyMask();
-            maxDepth = Math.max(maxDepth, sim.handContacts().maxDepth());
-            boxHit |= sim.objectTouchesBox();
+            current.maxDepth = Math.max(current.maxDepth, sim.handContacts().maxDepth());
+            current.boxHit |= sim.objectTouchesBox();
             sim.objectPosition(objectPosition);
-            apex = Math.max(apex, objectPosition[1]);
+            current.apex = Math.max(current.apex, objectPosition[1]);
             if (sim.objectTouchesGround() || distanceFromShoulder(objectPosition) > limits.maxDistance()) {
-                landing = Vec3.of(objectPosition);
+                current.landing = Vec3.of(objectPosition);
                 status = Status.DROPPED;
                 return finishLoop(false);
             }
@@ -350,10 +319,11 @@ public final class CatchThrowEpisode {
         Observation obs = observe();
         touchedSinceTick = 0;
         for (int i = 0; i < q.length; i++) {
-            maxLimitExcess = Math.max(maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
+            current.maxLimitExcess = Math.max(current.maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
         }
         for (WorldSnapshot.StaticBox b : boxes) {
-            boxDistance = Math.min(boxDistance, Math.max(0, distanceToBox(obs.object().position(), b) - objectRadius));
+            double d = Math.max(0, distanceToBox(obs.object().position(), b) - objectRadius);
+            current.boxDistance = Math.min(current.boxDistance, d);
         }
         trackFlight(obs);
         return obs;
@@ -376,7 +346,7 @@ public final class CatchThrowEpisode {
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
         if (before == Phase.MIDDLE && state.phase() == Phase.THROW) {
             beginLoop();
-        } else if (sim.time() - loopStart > limits.maxLoopSeconds()) {
+        } else if (sim.time() - current.loopStart > limits.maxLoopSeconds()) {
             status = Status.TIME_LIMIT;
             return finishLoop(false);
         }
@@ -390,11 +360,11 @@ public final class CatchThrowEpisode {
     private LoopRecord judgeCatch(Observation obs) {
         boolean held = obs.object().position().distance(obs.palm().origin()) < limits.holdDistance();
         if (!held) {
-            landing = obs.object().position();
+            current.landing = obs.object().position();
             status = Status.DROPPED;
         } else if (longAxis != null) {
             Vec3 axis = obs.object().orientation().rotate(longAxis); // unit: ObjectSpec normalises it
-            catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
+            current.catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
         }
         return finishLoop(held);
     }
@@ -407,17 +377,11 @@ public final class CatchThrowEpisode {
     }
 
     private void beginLoop() {
-        loopStart = sim.time();
-        apex = Double.NEGATIVE_INFINITY;
-        maxDepth = 0;
-        maxLimitExcess = 0;
-        boxHit = false;
-        boxDistance = Double.POSITIVE_INFINITY;
+        current = new LoopProgress();
+        current.loopStart = sim.time();
         flight.reset();
-        landing = null;
-        catchTilt = Double.NaN;
-        loopThrow = loops.isEmpty() ? null : state.currentThrow();
-        loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
+        current.loopThrow = loops.isEmpty() ? null : state.currentThrow();
+        current.loopGoal = loops.isEmpty() ? Double.NaN : task.targetHeight();
         if (!loops.isEmpty()) {
             task.advance(); // the throw of this loop is made: the next one aims at its own goal
         }
@@ -426,15 +390,16 @@ public final class CatchThrowEpisode {
 
     private LoopRecord finishLoop(boolean caught) {
         int index = loops.size();
-        if (!caught && landing == null) {
-            landing = sim.objectState().position();
+        if (!caught && current.landing == null) {
+            current.landing = sim.objectState().position();
         }
-        LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : apex, caught ? null : landing,
-                loopGoal, loopThrow, boxHit, boxes.isEmpty() ? Double.NaN : boxHit ? 0 : boxDistance,
+        LoopProgress c = current;
+        LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : c.apex, caught ? null : c.landing,
+                c.loopGoal, c.loopThrow, c.boxHit, boxes.isEmpty() ? Double.NaN : c.boxHit ? 0 : c.boxDistance,
                 index == 0 || longAxis == null ? Double.NaN : flight.rotation(),
-                index == 0 ? Double.NaN : flight.releaseSpin(), catchTilt, flight.catchPoint(),
+                index == 0 ? Double.NaN : flight.releaseSpin(), c.catchTilt, flight.catchPoint(),
                 index == 0 || longAxis == null ? Double.NaN : flight.arrivalTilt(),
-                maxDepth, maxLimitExcess, loop.peakTorqueRatio(), sim.time() - loopStart);
+                c.maxDepth, c.maxLimitExcess, loop.peakTorqueRatio(), sim.time() - c.loopStart);
         loops.add(r);
         return r;
     }
@@ -446,5 +411,35 @@ public final class CatchThrowEpisode {
         double dy = Math.max(0, Math.abs(p.y() - c.y()) - h.y());
         double dz = Math.max(0, Math.abs(p.z() - c.z()) - h.z());
         return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+
+    /** The statistics of a loop while it runs, copied whole into a checkpoint. */
+    private static final class LoopProgress {
+        double loopStart;
+        double apex = Double.NEGATIVE_INFINITY;
+        double maxDepth;
+        double maxLimitExcess;
+        boolean boxHit;
+        double boxDistance = Double.POSITIVE_INFINITY;
+        Vec3 landing;
+        /** The judged catch's tilt of the long axis out of the palm plane (see {@link LoopRecord#catchTilt}). */
+        double catchTilt = Double.NaN;
+        ThrowParameters loopThrow;
+        double loopGoal = Double.NaN;
+
+        LoopProgress copy() {
+            LoopProgress c = new LoopProgress();
+            c.loopStart = loopStart;
+            c.apex = apex;
+            c.maxDepth = maxDepth;
+            c.maxLimitExcess = maxLimitExcess;
+            c.boxHit = boxHit;
+            c.boxDistance = boxDistance;
+            c.landing = landing;
+            c.catchTilt = catchTilt;
+            c.loopThrow = loopThrow;
+            c.loopGoal = loopGoal;
+            return c;
+        }
     }
 }

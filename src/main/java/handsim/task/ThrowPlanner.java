@@ -24,7 +24,8 @@ import java.util.SplittableRandom;
  * <p>A try is better when the task counts its throw a success; among successes, when the long
  * object then lies across the palm, along the palm's z axis (where the next throw succeeds most
  * often; docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The
- * search stops at the first success whose object lies across within {@code goodAlignment}.
+ * search stops at the first success whose object lies across within {@code goodAlignment}; when
+ * none of the tries succeeded, it goes on with wider variations.
  */
 public final class ThrowPlanner {
 
@@ -34,12 +35,14 @@ public final class ThrowPlanner {
      * @param candidates throws tried at most per decision, the policy's own first
      * @param spread standard deviation of the variations, in the policy's action units ([-1, 1] per entry)
      * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
+     * @param widerCandidates when none of the first tries succeeded, this many more, varied by {@code widerSpread}
      */
-    public record Config(int candidates, double spread, double goodAlignment) {
+    public record Config(int candidates, double spread, double goodAlignment, int widerCandidates, double widerSpread) {
 
         public static Config parse(Json j) {
             j.allow("comment");
-            Config c = new Config(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), j.number("goodAlignment", 0, 1));
+            Config c = new Config(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), j.number("goodAlignment", 0, 1),
+                    j.integer("widerCandidates", 0, 10000), j.number("widerSpread", 0, 2));
             j.requireNoUnknownFields();
             return c;
         }
@@ -117,8 +120,13 @@ public final class ThrowPlanner {
         SplittableRandom rng = new SplittableRandom(seed);
         double[] centre = space.toAction(proposal);
         Trial best = null;
-        for (int k = 0; k < config.candidates(); k++) {
-            ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, rng));
+        for (int k = 0; k < config.candidates() + config.widerCandidates(); k++) {
+            boolean wider = k >= config.candidates();
+            if (wider && best.success()) {
+                break;
+            }
+            double spread = wider ? config.widerSpread() : config.spread();
+            ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, spread, rng));
             Trial t = play(now, candidate);
             tries++;
             if (best == null || t.betterThan(best)) {
@@ -147,10 +155,10 @@ public final class ThrowPlanner {
         expected = null;
     }
 
-    private double[] vary(double[] centre, SplittableRandom rng) {
+    private static double[] vary(double[] centre, double spread, SplittableRandom rng) {
         double[] a = centre.clone();
         for (int i = 0; i < a.length; i++) {
-            a[i] += config.spread() * gaussian(rng);
+            a[i] += spread * gaussian(rng);
         }
         return a;
     }
