@@ -153,6 +153,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ObjectNode out = JsonNodeFactory.instance.objectNode();
         out.put("task", task);
         out.put("controller", controller);
+        out.put("planned", plan);
         if (policy != null || controller.equals("learned")) {
             out.put("policy", policyFile().toString());
         }
@@ -229,6 +230,11 @@ final class EvaluateCommand implements Callable<Integer> {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
+    }
+
+    /** The controller as printed and in the charts' titles: with --plan, "learned + planner". */
+    private String controllerLabel() {
+        return plan ? controller + " + planner" : controller;
     }
 
     /** The policy file of the learned controller: --policy, or the shipped one for the task and object. */
@@ -590,7 +596,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
                 + "(min %d, max %d, at most %d); %d flips in %d throws; ended by %d drops, %d catches not lying in the hand, "
-                + "%d throws that did not flip%n", controller, object, runs.size(), mean, out.get("loops_completed_min").asInt(),
+                + "%d throws that did not flip%n", controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
                 out.get("drops").asInt(), out.get("tilted_catches").asInt(), out.get("unflipped_endings").asInt());
         System.out.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
@@ -604,7 +610,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 y[i] = runs.get(i).inARow();
             }
             new Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
-                    controller, object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
+                    controllerLabel(), object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
                     Plot.Style.BARS).writePng(plot);
             System.out.println("wrote " + plot);
             Path rotationPlot = besidePlot("-rotation");
@@ -640,7 +646,7 @@ final class EvaluateCommand implements Callable<Integer> {
             made[i] = b.throwsMade();
             succeeded[i] = b.successes();
         }
-        new Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", controller, object),
+        new Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", controllerLabel(), object),
                 "rotation of the long axis in flight (deg, bin centre)", "throws")
                 .add("throws", x, made, Plot.GREY, Plot.Style.BARS)
                 .add("flipped and caught lying in the hand", x, succeeded, Plot.BLUE, Plot.Style.BARS)
@@ -668,7 +674,7 @@ final class EvaluateCommand implements Callable<Integer> {
             lying[i] = b.successes() + b.standing();
             notDropped[i] = b.throwsMade() - b.drops();
         }
-        new Plot(String.format(Locale.ROOT, "Throws by arrival tilt, %s controller, %s", controller, object),
+        new Plot(String.format(Locale.ROOT, "Throws by arrival tilt, %s controller, %s", controllerLabel(), object),
                 "long axis out of the horizontal at the first touch of the catch (deg, bin centre)", "throws")
                 .add("dropped", x, all, Plot.RED, Plot.Style.BARS)
                 .add("caught, not flipped", x, notDropped, Plot.GREY, Plot.Style.BARS)
