@@ -458,6 +458,7 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("good_alignment", planning.goodAlignment());
         o.put("wider_candidates", planning.widerCandidates());
         o.put("wider_spread", planning.widerSpread());
+        o.put("lookahead", planning.lookahead());
         o.put("decisions", decisions);
         o.put("tries", tries);
         o.put("unsolved", unsolved);

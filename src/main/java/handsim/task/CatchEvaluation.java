@@ -126,7 +126,7 @@ public final class CatchEvaluation {
             if (waiting != null) {
                 plannedLoop = episode.loops().size();
                 long variations = seed ^ 0x9E3779B97F4A7C15L * plannedLoop;
-                liveThrow.set(planner.choose(episode, throwPolicy.decide(waiting), variations));
+                liveThrow.set(planner.choose(episode, throwPolicy, variations));
                 episode.resume();
                 return null;
             }

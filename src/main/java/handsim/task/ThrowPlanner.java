@@ -3,6 +3,7 @@ package handsim.task;
 import handsim.config.Json;
 import handsim.control.Observation;
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.SimulationDiverged;
@@ -21,11 +22,12 @@ import java.util.SplittableRandom;
  * parameters, and the object is moved by gravity, damping and contacts alone. What it costs is
  * the simulation of the tries (each about 1.5 s of simulated time).
  *
- * <p>A try is better when the task counts its throw a success; among successes, when the long
- * object then lies across the palm, along the palm's z axis (where the next throw succeeds most
- * often; docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The
- * search stops at the first success whose object lies across within {@code goodAlignment}; when
- * none of the tries succeeded, it goes on with wider variations.
+ * <p>A try is better when the task counts its throw a success; with a lookahead, when a throw
+ * from the state it leads to succeeds too (no dead end); then, among successes, when the long
+ * object lies across the palm, along the palm's z axis (where the next throw succeeds most often;
+ * docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The search
+ * stops at the first such success lying across within {@code goodAlignment}; when none of the
+ * tries was one, it goes on with wider variations.
  */
 public final class ThrowPlanner {
 
@@ -35,23 +37,26 @@ public final class ThrowPlanner {
      * @param candidates throws tried at most per decision, the policy's own first
      * @param spread standard deviation of the variations, in the policy's action units ([-1, 1] per entry)
      * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
-     * @param widerCandidates when none of the first tries succeeded, this many more, varied by {@code widerSpread}
+     * @param widerCandidates when no try succeeded, this many more, varied by {@code widerSpread}
+     * @param lookahead throws tried at most from a successful try's next state (the policy's, then
+     *     variations by {@code spread}); the try counts as a dead end when none succeeds; 0: no lookahead
      */
-    public record Config(int candidates, double spread, double goodAlignment, int widerCandidates, double widerSpread) {
+    public record Config(int candidates, double spread, double goodAlignment, int widerCandidates, double widerSpread,
+            int lookahead) {
 
         public static Config parse(Json j) {
             j.allow("comment");
             Config c = new Config(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), j.number("goodAlignment", 0, 1),
-                    j.integer("widerCandidates", 0, 10000), j.number("widerSpread", 0, 2));
+                    j.integer("widerCandidates", 0, 10000), j.number("widerSpread", 0, 2), j.integer("lookahead", 0, 10000));
             j.requireNoUnknownFields();
             return c;
         }
     }
 
-    /** The planner's work so far: decisions, tries, and decisions where no try succeeded. */
     /**
-     * The planner's work so far: decisions, tries, decisions where no try succeeded, and live
-     * throws whose loop differed in any way from the chosen try's (0 while the twin steps on bit for bit).
+     * The planner's work so far: decisions, tries (the lookahead's included), decisions where no
+     * try succeeded, and live throws whose loop differed in any way from the chosen try's (0
+     * while the twin steps on bit for bit).
      */
     public record Stats(int decisions, int tries, int unsolved, int mispredicted) {
 
@@ -60,14 +65,34 @@ public final class ThrowPlanner {
         }
     }
 
-    /** One throw played out in the twin, and the loop it made there (null if it diverged). */
-    private record Trial(ThrowParameters parameters, boolean success, double reward, double alignment, LoopRecord loop) {
+    /**
+     * One throw played out in the twin: whether it succeeded and, if so, whether a throw from its
+     * next state did too ({@code open}); the loop it made there (null if it diverged).
+     */
+    private record Trial(ThrowParameters parameters, boolean success, boolean open, double reward, double alignment,
+            LoopRecord loop) {
+
+        static Trial failed(ThrowParameters parameters) {
+            return new Trial(parameters, false, false, Double.NEGATIVE_INFINITY, 0, null);
+        }
+
+        /** A success that leads on: the kind of try the search looks for. */
+        boolean good() {
+            return success && open;
+        }
 
         boolean betterThan(Trial o) {
             if (success != o.success) {
                 return success;
             }
+            if (open != o.open) {
+                return open;
+            }
             return success ? alignment > o.alignment : reward > o.reward;
+        }
+
+        Trial leadingOn(boolean leadsOn) {
+            return new Trial(parameters, success, leadsOn, reward, alignment, loop);
         }
     }
 
@@ -112,27 +137,30 @@ public final class ThrowPlanner {
 
     /**
      * The throw {@code live} should make now; it must be waiting for one ({@link
-     * CatchThrowEpisode#runUntilThrowDue}). {@code proposal} is the policy's; {@code seed} seeds the
-     * variations (the same seed and state give the same choice).
+     * CatchThrowEpisode#runUntilThrowDue}). {@code policy} proposes the first try (and, with a
+     * lookahead, the first from each next state); {@code seed} seeds the variations (the same
+     * seed and state give the same choice).
      */
-    public ThrowParameters choose(CatchThrowEpisode live, ThrowParameters proposal, long seed) {
+    public ThrowParameters choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
         CatchThrowEpisode.Checkpoint now = live.checkpoint();
         SplittableRandom rng = new SplittableRandom(seed);
+        ThrowParameters proposal = policy.decide(live.waiting());
         double[] centre = space.toAction(proposal);
         Trial best = null;
         for (int k = 0; k < config.candidates() + config.widerCandidates(); k++) {
             boolean wider = k >= config.candidates();
-            if (wider && best.success()) {
+            if (wider && best.good()) {
                 break;
             }
             double spread = wider ? config.widerSpread() : config.spread();
-            ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, spread, rng));
-            Trial t = play(now, candidate);
-            tries++;
+            Trial t = play(now, k == 0 ? proposal : space.fromAction(vary(centre, spread, rng)));
+            if (t.success() && config.lookahead() > 0) {
+                t = t.leadingOn(leadsOn(policy, rng));
+            }
             if (best == null || t.betterThan(best)) {
                 best = t;
             }
-            if (best.success() && best.alignment() >= config.goodAlignment()) {
+            if (best.good() && best.alignment() >= config.goodAlignment()) {
                 break;
             }
         }
@@ -155,6 +183,19 @@ public final class ThrowPlanner {
         expected = null;
     }
 
+    /** Whether a throw from the twin's state now (a successful try's next decision) succeeds too. */
+    private boolean leadsOn(ThrowPolicy policy, SplittableRandom rng) {
+        CatchThrowEpisode.Checkpoint next = twin.checkpoint();
+        ThrowParameters proposal = policy.decide(twin.waiting());
+        double[] centre = space.toAction(proposal);
+        for (int j = 0; j < config.lookahead(); j++) {
+            if (play(next, j == 0 ? proposal : space.fromAction(vary(centre, config.spread(), rng))).success()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     private static double[] vary(double[] centre, double spread, SplittableRandom rng) {
         double[] a = centre.clone();
         for (int i = 0; i < a.length; i++) {
@@ -167,8 +208,12 @@ public final class ThrowPlanner {
         return Math.sqrt(-2 * Math.log(1 - rng.nextDouble())) * Math.cos(2 * Math.PI * rng.nextDouble());
     }
 
-    /** Plays {@code candidate} out in the twin, from {@code from} to the next throw or the end of the episode. */
+    /**
+     * Plays {@code candidate} out in the twin, from {@code from} to the next throw's decision (where
+     * the twin then waits) or the end of the episode. Without a lookahead a success counts as open.
+     */
     private Trial play(CatchThrowEpisode.Checkpoint from, ThrowParameters candidate) {
+        tries++;
         twin.restore(from);
         twinThrow.set(candidate);
         Observation next;
@@ -176,14 +221,14 @@ public final class ThrowPlanner {
             twin.resume();
             next = twin.runUntilThrowDue();
         } catch (SimulationDiverged e) {
-            return new Trial(candidate, false, Double.NEGATIVE_INFINITY, 0, null);
+            return Trial.failed(candidate);
         }
         if (twin.loops().size() <= from.loopCount()) {
-            return new Trial(candidate, false, Double.NEGATIVE_INFINITY, 0, null);
+            return Trial.failed(candidate);
         }
         LoopRecord made = twin.loops().get(from.loopCount());
         boolean success = next != null && task.success(made);
-        return new Trial(candidate, success, task.reward(made), next == null ? 0 : alignment(next), made);
+        return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made);
     }
 
     /** |long axis . palm z| (1 for an object without a long axis): 1 when the object lies across the palm. */

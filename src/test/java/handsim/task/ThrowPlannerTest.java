@@ -88,6 +88,24 @@ class ThrowPlannerTest {
     }
 
     @Test
+    void aLookaheadPlaysThrowsFromEachSuccessfulTrysNextStateAndStillChoosesSuccesses() {
+        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.candidates(), shipped.spread(), shipped.goodAlignment(),
+                shipped.widerCandidates(), shipped.widerSpread(), 4);
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation plain = nominalFlip().planned(shipped, twin);
+            CatchEvaluation looking = nominalFlip().planned(withLookahead, twin);
+            assertEquals(2, plain.successesInARow(plain.runWhileSuccessful(live, NOMINAL_FAILS, 2)));
+            assertEquals(2, looking.successesInARow(looking.runWhileSuccessful(live, NOMINAL_FAILS, 2)));
+            // each decision chose a success, and every success tried was followed by at least one throw
+            // from its next state: at least two tries a decision (without the lookahead one can do)
+            ThrowPlanner.Stats s = looking.plannerStats();
+            assertEquals(2, s.decisions());
+            assertTrue(s.tries() >= 2 * s.decisions(), s + " (without the lookahead: " + plain.plannerStats() + ")");
+            assertEquals(0, looking.plannerStats().mispredicted());
+        }
+    }
+
+    @Test
     void aTwinSharingTheLiveWorldsEngineIsRefused() {
         try (Simulator live = engine()) {
             CatchEvaluation planned = nominalFlip().planned(shipped, live);
@@ -102,7 +120,7 @@ class ThrowPlannerTest {
         var e = assertThrows(IllegalArgumentException.class, () -> height.planned(shipped, null));
         assertTrue(e.getMessage().contains("height"), e.getMessage());
         var bad = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
-                "{\"candidates\": 0, \"spread\": 0.1, \"goodAlignment\": 0.9, \"widerCandidates\": 0, \"widerSpread\": 0}")));
+                "{\"candidates\": 0, \"spread\": 0.1, \"goodAlignment\": 0.9, \"widerCandidates\": 0, \"widerSpread\": 0, \"lookahead\": 0}")));
         assertTrue(bad.getMessage().contains("candidates") && bad.getMessage().contains("0"), bad.getMessage());
     }
 }
