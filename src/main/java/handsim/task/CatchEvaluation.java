@@ -36,7 +36,8 @@ public final class CatchEvaluation {
     /** Non-null when every throw is planned in a twin world ({@link #planned}). */
     private ThrowPlanner.Config planning;
     private Simulator twin;
-    private ThrowPlanner.Stats planned = new ThrowPlanner.Stats(0, 0, 0, 0);
+    /** The planner's work in the episodes before the running one. */
+    private ThrowPlanner.Stats earlierEpisodes = new ThrowPlanner.Stats(0, 0, 0, 0);
     /** The running episode's planner, and the throw its controller makes next; null without planning. */
     private ThrowPlanner planner;
     private ChosenThrow liveThrow;
@@ -62,13 +63,13 @@ public final class CatchEvaluation {
 
     /**
      * This evaluation with every throw chosen by a {@link ThrowPlanner}: the throw policy proposes,
-     * the planner tries it and {@code config.candidates() - 1} variations in {@code twin}, a
-     * simulator of the same model and config with an engine of its own, and the hand makes the
-     * best. The caller closes {@code twin}.
+     * the planner tries its throw and variations of it in {@code twin}, a simulator of the same
+     * model and config with an engine of its own, and the hand makes the best. The caller closes
+     * {@code twin}.
      */
     public CatchEvaluation planned(ThrowPlanner.Config config, Simulator twin) {
-        CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
         ThrowPlanner.requirePlannable(task);
+        CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
         e.planning = config;
         e.twin = twin;
         return e;
@@ -81,7 +82,7 @@ public final class CatchEvaluation {
 
     /** What the planner did over every episode so far (zeros without planning). */
     public ThrowPlanner.Stats plannerStats() {
-        return planner == null ? planned : planned.plus(planner.stats());
+        return planner == null ? earlierEpisodes : earlierEpisodes.plus(planner.stats());
     }
 
     /** The task whose goals the throws aim at (its episode state is shared by every episode this evaluation starts). */
@@ -202,7 +203,7 @@ public final class CatchEvaluation {
     /** A planner for an episode with {@code thrown}, with its twin episode; the throw policy of the live controller. */
     private ThrowPolicy plan(ObjectSpec thrown) {
         if (planner != null) {
-            planned = planned.plus(planner.stats());
+            earlierEpisodes = earlierEpisodes.plus(planner.stats());
         }
         ChosenThrow twinThrow = new ChosenThrow();
         CatchThrowEpisode twinEpisode = new CatchThrowEpisode(twin, new PdController(twin.model(), controllerConfig.pd()),
