@@ -444,14 +444,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** The planner's settings and work over all workers, printed and in the JSON. */
     private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, List<CatchEvaluation> planned) {
-        int decisions = 0, tries = 0, unsolved = 0, mispredicted = 0;
-        for (CatchEvaluation e : planned) {
-            ThrowPlanner.Stats s = e.plannerStats();
-            decisions += s.decisions();
-            tries += s.tries();
-            unsolved += s.unsolved();
-            mispredicted += s.mispredicted();
-        }
+        ThrowPlanner.Stats s = planned.stream().map(CatchEvaluation::plannerStats).reduce(ThrowPlanner.Stats.NONE,
+                ThrowPlanner.Stats::plus);
         ObjectNode o = out.putObject("planner");
         o.put("candidates", planning.candidates());
         o.put("spread", planning.spread());
@@ -459,14 +453,13 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("wider_candidates", planning.widerCandidates());
         o.put("wider_spread", planning.widerSpread());
         o.put("lookahead", planning.lookahead());
-        o.put("decisions", decisions);
-        o.put("tries", tries);
-        o.put("unsolved", unsolved);
-        o.put("mispredicted", mispredicted);
-        System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw, at most %d); for %d of them no try "
-                + "succeeded; %d live throws differed from their try in the twin%n", decisions, tries,
-                decisions == 0 ? 0.0 : (double) tries / decisions, planning.candidates() + planning.widerCandidates(), unsolved,
-                mispredicted);
+        o.put("decisions", s.decisions());
+        o.put("tries", s.tries());
+        o.put("unsolved", s.unsolved());
+        o.put("mispredicted", s.mispredicted());
+        System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
+                + "%d live throws differed from their try in the twin%n", s.decisions(), s.tries(),
+                s.decisions() == 0 ? 0.0 : (double) s.tries() / s.decisions(), s.unsolved(), s.mispredicted());
     }
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */

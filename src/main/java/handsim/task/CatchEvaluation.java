@@ -37,7 +37,7 @@ public final class CatchEvaluation {
     private ThrowPlanner.Config planning;
     private Simulator twin;
     /** The planner's work in the episodes before the running one. */
-    private ThrowPlanner.Stats earlierEpisodes = new ThrowPlanner.Stats(0, 0, 0, 0);
+    private ThrowPlanner.Stats earlierEpisodes = ThrowPlanner.Stats.NONE;
     /** The running episode's planner, and the throw its controller makes next; null without planning. */
     private ThrowPlanner planner;
     private ChosenThrow liveThrow;

@@ -60,7 +60,9 @@ public final class ThrowPlanner {
      */
     public record Stats(int decisions, int tries, int unsolved, int mispredicted) {
 
-        Stats plus(Stats o) {
+        public static final Stats NONE = new Stats(0, 0, 0, 0);
+
+        public Stats plus(Stats o) {
             return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted);
         }
     }
