@@ -222,20 +222,11 @@ public final class CatchThrowEpisode {
             resume();
             return null;
         }
-        LoopRecord dropped = advancePhysics();
-        if (dropped != null) {
-            return dropped;
+        LoopRecord r = tickOrWait();
+        if (waiting != null) {
+            resume(); // the throw is asked for in the same tick as the catch is judged
         }
-        Observation obs = takeObservation();
-        LoopRecord judged = null;
-        if (controller.throwDue(obs, state)) {
-            judged = judgeCatch(obs);
-            if (status != Status.RUNNING) {
-                return judged;
-            }
-        }
-        LoopRecord cutOff = react(obs);
-        return judged != null ? judged : cutOff;
+        return r;
     }
 
     /**

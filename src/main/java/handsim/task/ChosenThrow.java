@@ -6,14 +6,15 @@ import handsim.control.ThrowPolicy;
 
 /**
  * The throw policy of a controller whose throws are chosen outside it, before the episode goes
- * on ({@link ThrowPlanner}): each throw is set just before the controller asks for it, and is
- * used once.
+ * on (by the {@link ThrowPlanner}, or by a learner's step): each throw is set just before the
+ * controller asks for it, and is used once.
  */
-final class ChosenThrow implements ThrowPolicy {
+public final class ChosenThrow implements ThrowPolicy {
 
     private ThrowParameters next;
 
-    void set(ThrowParameters parameters) {
+    /** The throw the controller makes when it next asks. */
+    public void set(ThrowParameters parameters) {
         next = parameters;
     }
 

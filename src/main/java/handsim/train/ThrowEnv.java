@@ -9,6 +9,7 @@ import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
+import handsim.task.ChosenThrow;
 import handsim.task.LoopRecord;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
@@ -39,26 +40,12 @@ public final class ThrowEnv implements Env {
     public record Settings(int firstCatchAttempts, double divergedReward, SpinShaping spinShaping, boolean endAtFailedThrow) {
     }
 
-    /** The throw policy of the episodes: it hands the controller the action of the current step. */
-    private static final class ChosenThrow implements ThrowPolicy {
-        private ThrowParameters next;
-
-        @Override
-        public ThrowParameters decide(Observation observation) {
-            if (next == null) {
-                throw new IllegalStateException("the controller asked for a throw no step chose");
-            }
-            ThrowParameters p = next;
-            next = null;
-            return p;
-        }
-    }
-
     private final Simulator sim;
     private final ThrowTask task;
     private final ThrowSpace space;
     private final StateVector stateVector;
     private final Settings settings;
+    /** The throw policy of the episodes: it hands the controller the action of the current step. */
     private final ChosenThrow chosen = new ChosenThrow();
     private final CatchEvaluation evaluation;
     private CatchThrowEpisode episode;
@@ -119,7 +106,7 @@ public final class ThrowEnv implements Env {
         if (episode == null || episode.status() != CatchThrowEpisode.Status.RUNNING) {
             throw new IllegalStateException("step() needs a running episode: call reset() first");
         }
-        chosen.next = space.fromAction(action);
+        chosen.set(space.fromAction(action));
         Observation next;
         try {
             episode.resume();
