@@ -415,7 +415,26 @@ public final class OdeSimulator implements Simulator {
         if (angles.length != model.dofCount()) {
             throw new IllegalArgumentException("expected " + model.dofCount() + " joint angles, got " + angles.length);
         }
-        // quickStep shuffles constraints with ODE's process-wide generator: reseed it
+        clearWorld(seed);
+        Frame[] frames = kin.forward(angles);
+        for (Body b : model.bodies()) {
+            Frame f = frames[b.index()];
+            Vec3 centre = f.pointToWorld(centreOfMass[b.index()]);
+            setBody(bodies[b.index()], new RigidState(centre, f.rotation(), Vec3.ZERO, Vec3.ZERO));
+        }
+        java.util.Arrays.fill(tau, 0);
+        time = 0;
+        steps = 0;
+        contacts.clear(0);
+        updateJointState();
+    }
+
+    /**
+     * What {@link #reset} and {@link #restoreState} start from: ODE's generator reseeded (quickStep
+     * shuffles constraints with this process-wide generator), the object and the boxes removed,
+     * no force or torque accumulated on the arm.
+     */
+    private void clearWorld(long seed) {
         DMisc.dRandSetSeed(seed);
         removeObject();
         for (DGeom b : boxes) {
@@ -424,26 +443,12 @@ public final class OdeSimulator implements Simulator {
         boxes.clear();
         boxSpecs.clear();
         contactGroup.empty();
-        Frame[] frames = kin.forward(angles);
-        for (Body b : model.bodies()) {
-            DBody body = bodies[b.index()];
-            Frame f = frames[b.index()];
-            Vec3 p = f.pointToWorld(centreOfMass[b.index()]);
-            body.setPosition(p.x(), p.y(), p.z());
-            Quat r = f.rotation();
-            body.setQuaternion(new DQuaternion(r.w(), r.x(), r.y(), r.z()));
-            body.setLinearVel(0, 0, 0);
-            body.setAngularVel(0, 0, 0);
+        for (DBody body : bodies) {
             body.setForce(0, 0, 0);
             body.setTorque(0, 0, 0);
         }
-        java.util.Arrays.fill(tau, 0);
-        time = 0;
-        steps = 0;
-        contacts.clear(0);
         touchesGround = false;
         touchesBox = false;
-        updateJointState();
     }
 
     @Override
@@ -463,7 +468,7 @@ public final class OdeSimulator implements Simulator {
             throw new IllegalArgumentException("the state is of a model with " + state.length / WorldState.PER_BODY
                     + " bodies and " + s.torques().length + " DOFs, this world's has " + bodies.length + " and " + tau.length);
         }
-        reset(q, s.randomSeed()); // the object and boxes go, the generator takes the captured seed
+        clearWorld(s.randomSeed());
         for (int b = 0; b < bodies.length; b++) {
             int i = WorldState.PER_BODY * b;
             restoreBody(bodies[b], new RigidState(new Vec3(state[i], state[i + 1], state[i + 2]),
