@@ -156,12 +156,13 @@ public final class CatchPlanner {
         return fallingTilt + (Math.PI / 2 - fallingTilt) * Math.min(1, horizontal);
     }
 
-    /** The object's long axis (world) after {@code t} seconds of free rotation at constant angular velocity. */
+    /**
+     * The object's long axis (world) after {@code t} seconds of torque-free rotation ({@link
+     * FreeRotation}: a roll about the axis itself does not tip it).
+     */
     static Optional<Vec3> longAxisAt(RigidState object, ObjectSpec spec, double t) {
-        return spec.longAxis().map(axis -> {
-            Quat spin = Quat.fromRotationVector(object.angularVelocity().times(t));
-            return spin.mul(object.orientation()).rotate(axis);
-        });
+        return spec.longAxis().map(axis -> new FreeRotation(spec.mass().inertia())
+                .after(object.orientation(), object.angularVelocity(), t).orientation().rotate(axis));
     }
 
     /**

@@ -48,6 +48,21 @@ public record Inertia(double xx, double yy, double zz, double xy, double xz, dou
         return new Inertia(out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]);
     }
 
+    /** The tensor times a vector: the angular momentum of a body turning at {@code w} (same frame). */
+    public Vec3 times(Vec3 w) {
+        return new Vec3(xx * w.x() + xy * w.y() + xz * w.z(), xy * w.x() + yy * w.y() + yz * w.z(),
+                xz * w.x() + yz * w.y() + zz * w.z());
+    }
+
+    /** The vector {@code w} with {@code this.times(w) = l} (Cramer's rule): the spin of angular momentum l. */
+    public Vec3 solve(Vec3 l) {
+        double c00 = yy * zz - yz * yz, c01 = xz * yz - xy * zz, c02 = xy * yz - xz * yy;
+        double det = xx * c00 + xy * c01 + xz * c02;
+        double c11 = xx * zz - xz * xz, c12 = xy * xz - xx * yz, c22 = xx * yy - xy * xy;
+        return new Vec3(c00 * l.x() + c01 * l.y() + c02 * l.z(), c01 * l.x() + c11 * l.y() + c12 * l.z(),
+                c02 * l.x() + c12 * l.y() + c22 * l.z()).times(1 / det);
+    }
+
     public Inertia scaled(double s) {
         return new Inertia(xx * s, yy * s, zz * s, xy * s, xz * s, yz * s);
     }
