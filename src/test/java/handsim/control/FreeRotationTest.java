@@ -1,6 +1,7 @@
 package handsim.control;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.math.Quat;
 import handsim.math.Vec3;
@@ -49,6 +50,6 @@ class FreeRotationTest {
         assertEquals(0, lAfter.distance(l), 1e-9, "angular momentum conserved");
         // turning the axis by the whole angular velocity would miss it by far (the old prediction)
         double naiveMiss = Quat.fromRotationVector(w0.times(t)).rotate(axis0).distance(expected);
-        assertEquals(true, naiveMiss > 0.5, "constant-w prediction misses by " + naiveMiss);
+        assertTrue(naiveMiss > 0.5, "constant-w prediction misses by " + naiveMiss);
     }
 }
