@@ -447,11 +447,9 @@ final class EvaluateCommand implements Callable<Integer> {
         ThrowPlanner.Stats s = planned.stream().map(CatchEvaluation::plannerStats).reduce(ThrowPlanner.Stats.NONE,
                 ThrowPlanner.Stats::plus);
         ObjectNode o = out.putObject("planner");
-        o.put("candidates", planning.candidates());
-        o.put("spread", planning.spread());
+        ArrayNode rounds = o.putArray("rounds");
+        planning.rounds().forEach(r -> rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread()));
         o.put("good_alignment", planning.goodAlignment());
-        o.put("wider_candidates", planning.widerCandidates());
-        o.put("wider_spread", planning.widerSpread());
         o.put("lookahead", planning.lookahead());
         o.put("decisions", s.decisions());
         o.put("tries", s.tries());
@@ -511,7 +509,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ObjectSpec spec = Runtime.object(object);
         Tasks tasks = Runtime.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
-        ThrowPlanner.Config planning = plan ? Runtime.plannerConfig() : null;
+        ThrowPlanner.Config planning = plan ? Runtime.plannerConfig(object) : null;
         List<CatchEvaluation> planned = Collections.synchronizedList(new ArrayList<>());
         List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
         List<FlipRun> runs;

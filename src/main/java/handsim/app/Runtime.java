@@ -89,9 +89,9 @@ final class Runtime {
     }
 
     /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
-    /** {@code configs/planner.json}. */
-    static ThrowPlanner.Config plannerConfig() {
-        return ThrowPlanner.Config.parse(Json.load(Home.resolve("configs/planner.json")));
+    /** {@code configs/planner.json}, with {@code object}'s own rounds if it has some. */
+    static ThrowPlanner.Config plannerConfig(String object) {
+        return ThrowPlanner.Config.parse(Json.load(Home.resolve("configs/planner.json")), object);
     }
 
     /** A twin of {@code sim} for a planner: the same model and config, on an engine of its own. */

@@ -135,7 +135,7 @@ final class ShippedScenes implements SceneCatalog {
             notes.add("the throw planner chooses the flip task's throws only: the " + task.name() + " task's are not planned");
         } else if (plan) {
             twin = Runtime.twinSimulator(sim);
-            evaluation = evaluation.planned(Runtime.plannerConfig(), twin);
+            evaluation = evaluation.planned(Runtime.plannerConfig(shown.object()), twin);
         }
         InteractiveScene scene = new CatchLoopScene(sim, evaluation, shown.seed(), heightControl, twin);
         return new Opened(scene, shown, notes);

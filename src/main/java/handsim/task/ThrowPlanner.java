@@ -7,6 +7,7 @@ import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.SimulationDiverged;
+import java.util.List;
 import java.util.SplittableRandom;
 
 /**
@@ -26,30 +27,84 @@ import java.util.SplittableRandom;
  * from the state it leads to succeeds too (no dead end); then, among successes, when the long
  * object lies across the palm, along the palm's z axis (where the next throw succeeds most often;
  * docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The search
- * stops at the first such success lying across within {@code goodAlignment}; when none of the
- * tries was one, it goes on with wider variations.
+ * stops at the first such success lying across within {@code goodAlignment}; when none of a
+ * round's tries was one, the next round goes on with its own spread (an object may have rounds of
+ * its own: the club's are many and narrow, docs/flip-experiments.md, eighteenth session).
  */
 public final class ThrowPlanner {
 
     /**
+     * One round of the search: up to {@code candidates} throws, each the proposal varied by a
+     * Gaussian of standard deviation {@code spread} in the policy's action units ([-1, 1] per entry).
+     */
+    public record Round(int candidates, double spread) {
+
+        static Round parse(Json j) {
+            Round r = new Round(j.integer("candidates", 1, 10000), j.number("spread", 0, 2));
+            j.requireNoUnknownFields();
+            return r;
+        }
+    }
+
+    /**
      * {@code configs/planner.json}.
      *
-     * @param candidates throws tried at most per decision, the policy's own first
-     * @param spread standard deviation of the variations, in the policy's action units ([-1, 1] per entry)
+     * @param rounds the search's rounds in order; the first try of the first is the policy's own
+     *     throw; a round after the first begins only when no earlier try was a success leading on
      * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
-     * @param widerCandidates when no try succeeded, this many more, varied by {@code widerSpread}
      * @param lookahead throws tried at most from a successful try's next state (the policy's, then
-     *     variations by {@code spread}); the try counts as a dead end when none succeeds; 0: no lookahead
+     *     variations by the first round's spread); the try counts as a dead end when none succeeds;
+     *     0: no lookahead
      */
-    public record Config(int candidates, double spread, double goodAlignment, int widerCandidates, double widerSpread,
-            int lookahead) {
+    public record Config(List<Round> rounds, double goodAlignment, int lookahead) {
 
+        public Config {
+            rounds = List.copyOf(rounds);
+            if (rounds.isEmpty()) {
+                throw new IllegalArgumentException("a planner needs at least one round");
+            }
+        }
+
+        /** The settings for every object: the file's {@code rounds}. */
         public static Config parse(Json j) {
+            return parse(j, null);
+        }
+
+        /**
+         * The settings for {@code object}: the file's {@code rounds}, replaced by those under
+         * {@code objects.<object>} when it has an entry there (every entry is checked).
+         */
+        public static Config parse(Json j, String object) {
             j.allow("comment");
-            Config c = new Config(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), j.number("goodAlignment", 0, 1),
-                    j.integer("widerCandidates", 0, 10000), j.number("widerSpread", 0, 2), j.integer("lookahead", 0, 10000));
+            List<Round> rounds = rounds(j);
+            if (j.has("objects")) {
+                Json objects = j.get("objects");
+                for (String name : objects.fieldNames()) {
+                    Json entry = objects.get(name);
+                    entry.allow("comment");
+                    List<Round> own = rounds(entry);
+                    entry.requireNoUnknownFields();
+                    if (name.equals(object)) {
+                        rounds = own;
+                    }
+                }
+            }
+            Config c = new Config(rounds, j.number("goodAlignment", 0, 1), j.integer("lookahead", 0, 10000));
             j.requireNoUnknownFields();
             return c;
+        }
+
+        private static List<Round> rounds(Json j) {
+            List<Json> list = j.array("rounds");
+            if (list.isEmpty()) {
+                throw j.fieldError("rounds", "needs at least one round, got []");
+            }
+            return list.stream().map(Round::parse).toList();
+        }
+
+        /** The most throws one decision tries (without the lookahead's). */
+        public int maxTries() {
+            return rounds.stream().mapToInt(Round::candidates).sum();
         }
     }
 
@@ -149,21 +204,24 @@ public final class ThrowPlanner {
         ThrowParameters proposal = policy.decide(live.waiting());
         double[] centre = space.toAction(proposal);
         Trial best = null;
-        for (int k = 0; k < config.candidates() + config.widerCandidates(); k++) {
-            boolean wider = k >= config.candidates();
-            if (wider && best.good()) {
+        search:
+        for (int round = 0; round < config.rounds().size(); round++) {
+            if (round > 0 && best.good()) {
                 break;
             }
-            double spread = wider ? config.widerSpread() : config.spread();
-            Trial t = play(now, k == 0 ? proposal : space.fromAction(vary(centre, spread, rng)));
-            if (t.success() && config.lookahead() > 0) {
-                t = t.leadingOn(leadsOn(policy, rng));
-            }
-            if (best == null || t.betterThan(best)) {
-                best = t;
-            }
-            if (best.good() && best.alignment() >= config.goodAlignment()) {
-                break;
+            Round r = config.rounds().get(round);
+            for (int k = 0; k < r.candidates(); k++) {
+                boolean first = round == 0 && k == 0;
+                Trial t = play(now, first ? proposal : space.fromAction(vary(centre, r.spread(), rng)));
+                if (t.success() && config.lookahead() > 0) {
+                    t = t.leadingOn(leadsOn(policy, rng));
+                }
+                if (best == null || t.betterThan(best)) {
+                    best = t;
+                }
+                if (best.good() && best.alignment() >= config.goodAlignment()) {
+                    break search;
+                }
             }
         }
         decisions++;
@@ -191,7 +249,7 @@ public final class ThrowPlanner {
         ThrowParameters proposal = policy.decide(twin.waiting());
         double[] centre = space.toAction(proposal);
         for (int j = 0; j < config.lookahead(); j++) {
-            if (play(next, j == 0 ? proposal : space.fromAction(vary(centre, config.spread(), rng))).success()) {
+            if (play(next, j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng))).success()) {
                 return true;
             }
         }

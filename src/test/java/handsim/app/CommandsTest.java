@@ -101,7 +101,7 @@ class CommandsTest {
         JsonNode summary = Json.load(json).node();
         JsonNode planner = summary.get("planner");
         // configs/planner.json's settings, and its work: one decision per throw after the throw-in
-        assertEquals(24, planner.get("candidates").asInt());
+        assertEquals(24, planner.get("rounds").get(0).get("candidates").asInt());
         assertEquals(summary.get("throws").asInt(), planner.get("decisions").asInt(), summary.toString());
         // seed 101 made 20 planned loops in a row when measured (the learned policy proposing): 2 of 2 here
         assertEquals(2, summary.get("loops_completed").asInt(), text);

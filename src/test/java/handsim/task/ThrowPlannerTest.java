@@ -80,7 +80,7 @@ class ThrowPlannerTest {
             assertEquals(4, planned.successesInARow(loops), "loops: " + loops);
             ThrowPlanner.Stats stats = planned.plannerStats();
             assertEquals(4, stats.decisions());
-            assertTrue(stats.tries() >= 4 && stats.tries() <= 4 * (shipped.candidates() + shipped.widerCandidates()), stats.toString());
+            assertTrue(stats.tries() >= 4 && stats.tries() <= 4 * shipped.maxTries(), stats.toString());
             assertEquals(0, stats.unsolved(), stats.toString());
             // the live world threw each chosen throw to exactly the loop the twin had shown
             assertEquals(0, stats.mispredicted(), stats.toString());
@@ -89,8 +89,7 @@ class ThrowPlannerTest {
 
     @Test
     void aLookaheadPlaysThrowsFromEachSuccessfulTrysNextStateAndStillChoosesSuccesses() {
-        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.candidates(), shipped.spread(), shipped.goodAlignment(),
-                shipped.widerCandidates(), shipped.widerSpread(), 4);
+        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation plain = nominalFlip().planned(shipped, twin);
             CatchEvaluation looking = nominalFlip().planned(withLookahead, twin);
@@ -103,6 +102,19 @@ class ThrowPlannerTest {
             assertTrue(s.tries() >= 2 * s.decisions(), s + " (without the lookahead: " + plain.plannerStats() + ")");
             assertEquals(0, looking.plannerStats().mispredicted());
         }
+    }
+
+    @Test
+    void anObjectsOwnRoundsReplaceTheFilesForThatObjectOnly() {
+        Json file = Json.parse("planner.json", "{\"rounds\": [{\"candidates\": 24, \"spread\": 0.1}, {\"candidates\": 24, \"spread\": 0.3}], "
+                + "\"goodAlignment\": 0.9, \"lookahead\": 2, \"objects\": {\"club\": {\"rounds\": [{\"candidates\": 60, \"spread\": 0.05}]}}}");
+        ThrowPlanner.Config can = ThrowPlanner.Config.parse(file, "can");
+        assertEquals(List.of(new ThrowPlanner.Round(24, 0.1), new ThrowPlanner.Round(24, 0.3)), can.rounds());
+        assertEquals(48, can.maxTries());
+        ThrowPlanner.Config club = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()), "club");
+        assertEquals(List.of(new ThrowPlanner.Round(60, 0.05)), club.rounds());
+        assertEquals(0.9, club.goodAlignment());
+        assertEquals(2, club.lookahead(), "the file's other settings hold for the club too");
     }
 
     @Test
@@ -120,7 +132,15 @@ class ThrowPlannerTest {
         var e = assertThrows(IllegalArgumentException.class, () -> height.planned(shipped, null));
         assertTrue(e.getMessage().contains("height"), e.getMessage());
         var bad = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
-                "{\"candidates\": 0, \"spread\": 0.1, \"goodAlignment\": 0.9, \"widerCandidates\": 0, \"widerSpread\": 0, \"lookahead\": 0}")));
+                "{\"rounds\": [{\"candidates\": 0, \"spread\": 0.1}], \"goodAlignment\": 0.9, \"lookahead\": 0}")));
         assertTrue(bad.getMessage().contains("candidates") && bad.getMessage().contains("0"), bad.getMessage());
+        var none = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+                "{\"rounds\": [], \"goodAlignment\": 0.9, \"lookahead\": 0}")));
+        assertTrue(none.getMessage().contains("rounds"), none.getMessage());
+        // an object's entry is checked even when another object is planned for
+        var badObject = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+                "{\"rounds\": [{\"candidates\": 4, \"spread\": 0.1}], \"goodAlignment\": 0.9, \"lookahead\": 0, "
+                        + "\"objects\": {\"club\": {\"rounds\": [{\"candidates\": 4, \"spreed\": 0.1}]}}}"), "can"));
+        assertTrue(badObject.getMessage().contains("objects.club.rounds[0]"), badObject.getMessage());
     }
 }
