@@ -71,27 +71,33 @@ public final class ThrowPlanner {
         }
 
         /**
-         * The settings for {@code object}: the file's {@code rounds}, replaced by those under
-         * {@code objects.<object>} when it has an entry there (every entry is checked).
+         * The settings for {@code object}: the file's {@code rounds} and {@code lookahead}, each
+         * replaced by the one under {@code objects.<object>} when that entry has it (every
+         * object's entry is checked, whichever object is planned).
          */
         public static Config parse(Json j, String object) {
             j.allow("comment");
-            List<Round> rounds = rounds(j);
+            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j));
+            Config chosen = file;
             if (j.has("objects")) {
                 Json objects = j.get("objects");
                 for (String name : objects.fieldNames()) {
                     Json entry = objects.get(name);
                     entry.allow("comment");
-                    List<Round> own = rounds(entry);
+                    Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(), file.goodAlignment(),
+                            entry.has("lookahead") ? lookahead(entry) : file.lookahead());
                     entry.requireNoUnknownFields();
                     if (name.equals(object)) {
-                        rounds = own;
+                        chosen = own;
                     }
                 }
             }
-            Config c = new Config(rounds, j.number("goodAlignment", 0, 1), j.integer("lookahead", 0, 10000));
             j.requireNoUnknownFields();
-            return c;
+            return chosen;
+        }
+
+        private static int lookahead(Json j) {
+            return j.integer("lookahead", 0, 10000);
         }
 
         private static List<Round> rounds(Json j) {

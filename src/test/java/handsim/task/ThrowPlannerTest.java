@@ -105,7 +105,7 @@ class ThrowPlannerTest {
     }
 
     @Test
-    void anObjectsOwnRoundsReplaceTheFilesForThatObjectOnly() {
+    void anObjectsOwnRoundsAndLookaheadReplaceTheFilesForThatObjectOnly() {
         Json file = Json.parse("planner.json", "{\"rounds\": [{\"candidates\": 24, \"spread\": 0.1}, {\"candidates\": 24, \"spread\": 0.3}], "
                 + "\"goodAlignment\": 0.9, \"lookahead\": 2, \"objects\": {\"club\": {\"rounds\": [{\"candidates\": 60, \"spread\": 0.05}]}}}");
         ThrowPlanner.Config can = ThrowPlanner.Config.parse(file, "can");
@@ -115,6 +115,10 @@ class ThrowPlannerTest {
         assertEquals(List.of(new ThrowPlanner.Round(60, 0.05)), club.rounds());
         assertEquals(0.9, club.goodAlignment());
         assertEquals(2, club.lookahead(), "the file's other settings hold for the club too");
+        ThrowPlanner.Config looking = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+                .replace("\"club\":{", "\"club\":{\"lookahead\":7,")), "club");
+        assertEquals(7, looking.lookahead(), "an object's own lookahead replaces the file's");
+        assertEquals(club.rounds(), looking.rounds());
     }
 
     @Test
