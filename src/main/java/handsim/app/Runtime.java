@@ -89,9 +89,21 @@ final class Runtime {
     }
 
     /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
-    /** {@code configs/planner.json}, with {@code object}'s own rounds if it has some. */
+    /**
+     * {@code configs/planner.json}, with {@code object}'s own settings if it has some; an entry
+     * under {@code objects} for an object that {@code configs/objects/} lacks is refused by name.
+     */
     static ThrowPlanner.Config plannerConfig(String object) {
-        return ThrowPlanner.Config.parse(Json.load(Home.resolve("configs/planner.json")), object);
+        Json file = Json.load(Home.resolve("configs/planner.json"));
+        if (file.has("objects")) {
+            Json objects = file.get("objects");
+            for (String name : objects.fieldNames()) {
+                if (!Home.resolve("configs/objects/" + name + ".json").toFile().isFile()) {
+                    throw objects.fieldError(name, "no such object (configs/objects/" + name + ".json)");
+                }
+            }
+        }
+        return ThrowPlanner.Config.parse(file, object);
     }
 
     /** A twin of {@code sim} for a planner: the same model and config, on an engine of its own. */

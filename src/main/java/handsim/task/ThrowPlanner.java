@@ -65,7 +65,7 @@ public final class ThrowPlanner {
             }
         }
 
-        /** The settings for every object: the file's {@code rounds}. */
+        /** The file's own settings: those of an object without an entry under {@code objects}. */
         public static Config parse(Json j) {
             return parse(j, null);
         }
