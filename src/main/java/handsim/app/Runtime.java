@@ -88,7 +88,6 @@ final class Runtime {
         return new OdeSimulator(model, config);
     }
 
-    /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
     /**
      * {@code configs/planner.json}, with {@code object}'s own settings if it has some; an entry
      * under {@code objects} for an object that {@code configs/objects/} lacks is refused by name.
@@ -111,6 +110,7 @@ final class Runtime {
         return IsolatedEngine.simulator(sim.model(), sim.config());
     }
 
+    /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
     static Rollouts rollouts(HandModel model, SimConfig config, int workers) {
         return new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config));
     }
