@@ -49,11 +49,16 @@ final class Runtime {
 
     /** An object from {@code configs/objects/NAME.json}. */
     static ObjectSpec object(String name) {
-        Path file = Home.resolve("configs/objects/" + name + ".json");
+        Path file = objectFile(name);
         if (!file.toFile().isFile()) {
             throw new IllegalArgumentException("unknown object \"" + name + "\" (no " + Home.root().relativize(file) + ")");
         }
         return ObjectSpec.load(file);
+    }
+
+    /** Where the object {@code name} is described: {@code configs/objects/NAME.json}. */
+    private static Path objectFile(String name) {
+        return Home.resolve("configs/objects/" + name + ".json");
     }
 
     /** Seeded catch-and-throw episodes of the nominal controller on {@code task} with the shipped launch and episode configs. */
@@ -97,8 +102,9 @@ final class Runtime {
         if (file.has("objects")) {
             Json objects = file.get("objects");
             for (String name : objects.fieldNames()) {
-                if (!Home.resolve("configs/objects/" + name + ".json").toFile().isFile()) {
-                    throw objects.fieldError(name, "no such object (configs/objects/" + name + ".json)");
+                Path described = objectFile(name);
+                if (!described.toFile().isFile()) {
+                    throw objects.fieldError(name, "no such object (no " + Home.root().relativize(described) + ")");
                 }
             }
         }
