@@ -78,7 +78,12 @@ public final class CatchPlanner {
      * its dorsal normal (the neutral one); {@code reach} says where the arm can put the palm.
      */
     public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach) {
-        double t = ballistics.descendingCrossing(object.position(), object.velocity(), planeHeight);
+        return plan(object, spec, grasp, readyRotation, reach, new CatchStyle(0, velocityFraction));
+    }
+
+    /** {@link #plan} meeting the object as {@code style} says instead of this planner's own way. */
+    public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach, CatchStyle style) {
+        double t = ballistics.descendingCrossing(object.position(), object.velocity(), planeHeight + style.planeShift());
         if (Double.isNaN(t) || t < minDuration) {
             // too soon (or below the plane already): meet it later, lower down
             t = minDuration;
@@ -89,7 +94,7 @@ public final class CatchPlanner {
         Vec3 back = backOfHand(v, axis, fallingTilt);
         Quat preferred = handRotation(back, axis, readyRotation);
         Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()), axis.isPresent(), reach);
-        return new Plan(t, palm, v.times(velocityFraction), p, v);
+        return new Plan(t, palm, v.times(style.velocityFraction()), p, v);
     }
 
     /**

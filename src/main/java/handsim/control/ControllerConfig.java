@@ -32,13 +32,17 @@ import java.util.Optional;
  *     down, to lie flat under its axis (rad); more for objects arriving from the side
  * @param release when present, THROW ends when the object would turn far enough in flight
  *     instead of after {@code throwDuration}; a task sets it ({@link #withRelease})
+ * @param catchAfterThrow when present, how the catches after the hand's own throws meet the object
+ *     (the throw-in is caught with {@code (0, catchVelocityFraction)}); a task sets it ({@link
+ *     #withCatchAfterThrow})
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
         double catchVelocityFraction, double restPlaneHeight, double throwEndSpeedFactor, double openTime,
         double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
         Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations,
-        double replanSpeedChange, double fallingTilt, Optional<ClosedLoopRelease> release) {
+        double replanSpeedChange, double fallingTilt, Optional<ClosedLoopRelease> release,
+        Optional<CatchStyle> catchAfterThrow) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -79,7 +83,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                 catching.integer("reachIkIterations", 1, 10000),
                 catching.positive("replanSpeedChange"),
                 Math.toRadians(catching.number("fallingTiltDeg", 0, 90)),
-                Optional.empty());
+                Optional.empty(), Optional.empty());
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }
@@ -95,9 +99,23 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
             throw new IllegalArgumentException("a closed-loop release's earliest end (" + r.earliest()
                     + " s) must lie within THROW (" + throwDuration + " s)");
         }
+        return with(Optional.of(r), catchAfterThrow);
+    }
+
+    /** This config with the catches after the hand's throws meeting the object as {@code style} says. */
+    public ControllerConfig withCatchAfterThrow(CatchStyle style) {
+        return with(release, Optional.of(style));
+    }
+
+    /** The controller's own way of meeting an object: on the interception plane at catchVelocityFraction. */
+    public CatchStyle catchStyle() {
+        return new CatchStyle(0, catchVelocityFraction);
+    }
+
+    private ControllerConfig with(Optional<ClosedLoopRelease> r, Optional<CatchStyle> c) {
         return new ControllerConfig(pd, ik, periodSteps, catchMinDuration, middleDuration, throwDuration, gobackDuration,
                 interceptionHeight, catchVelocityFraction, restPlaneHeight, throwEndSpeedFactor, openTime, closeTime,
                 neutralTime, throwSpace, nominalThrows, grasps, headingSearch, reachIkIterations, replanSpeedChange, fallingTilt,
-                Optional.of(r));
+                r, c);
     }
 }

@@ -21,6 +21,8 @@ public final class ControllerState {
     /** Simulated time at which the planned interception ends CATCH. */
     double catchEnd;
     ThrowParameters currentThrow;
+    /** How the catch after the current or last THROW meets the object (null before the first: the controller's own). */
+    CatchStyle catchAfterThrow;
     /** The hand closed on a contact since the current CATCH began. */
     boolean closedOnContact;
     HandPose handPose;
@@ -95,6 +97,7 @@ public final class ControllerState {
         c.plannedAt = plannedAt;
         c.catchEnd = catchEnd;
         c.currentThrow = currentThrow;
+        c.catchAfterThrow = catchAfterThrow;
         c.closedOnContact = closedOnContact;
         c.handPose = handPose;
         c.poseFrom = poseFrom.clone();

@@ -160,6 +160,7 @@ public final class NominalController {
             case THROW -> {
                 ThrowParameters p = throwPolicy.decide(obs);
                 s.currentThrow = p;
+                s.catchAfterThrow = throwPolicy.catchAfterThrow().or(config::catchAfterThrow).orElse(null);
                 double tt = config.throwDuration();
                 Vec3 endVelocity = p.dOffset().times(config.throwEndSpeedFactor() / tt);
                 Quat end = Quat.fromRotationVector(p.rTarget()).mul(neutralPalm.rotation());
@@ -180,7 +181,8 @@ public final class NominalController {
      */
     private void planCatch(Observation obs, Vec3 p0, Vec3 v0, Quat r0, ControllerState s) {
         CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
-                palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()));
+                palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()),
+                s.catchAfterThrow == null ? config.catchStyle() : s.catchAfterThrow);
         s.plan = plan;
         s.plannedFrom = obs.object();
         s.plannedAt = obs.time();

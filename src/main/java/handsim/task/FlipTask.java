@@ -1,6 +1,7 @@
 package handsim.task;
 
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
@@ -37,8 +38,10 @@ public final class FlipTask implements ThrowTask {
      * @param flipAngle turning of the long axis that makes one flip (rad)
      * @param nominal the hand-tuned flip throw
      * @param release how THROW lets go of this object, when not after its fixed duration
+     * @param catchAfterThrow how the catch after each flip meets this object, when not as the controller's
      */
-    public record ObjectFlip(double flipAngle, ThrowParameters nominal, Optional<ClosedLoopRelease> release) {
+    public record ObjectFlip(double flipAngle, ThrowParameters nominal, Optional<ClosedLoopRelease> release,
+            Optional<CatchStyle> catchAfterThrow) {
     }
 
     /**
@@ -82,7 +85,8 @@ public final class FlipTask implements ThrowTask {
                 }
                 Optional<ClosedLoopRelease> release = o.has("release") ? Optional.of(ClosedLoopRelease.parse(o.get("release")))
                         : Optional.empty();
-                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal, release));
+                Optional<CatchStyle> catching = o.has("catch") ? Optional.of(CatchStyle.parse(o.get("catch"))) : Optional.empty();
+                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal, release, catching));
                 o.requireNoUnknownFields();
             }
             Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
@@ -157,7 +161,8 @@ public final class FlipTask implements ThrowTask {
 
     @Override
     public ControllerConfig controller(ControllerConfig base) {
-        return flip.release().map(base::withRelease).orElse(base);
+        ControllerConfig released = flip.release().map(base::withRelease).orElse(base);
+        return flip.catchAfterThrow().map(released::withCatchAfterThrow).orElse(released);
     }
 
     /** eq. (7). */

@@ -109,6 +109,55 @@ class NominalControllerTest {
         assertEquals(config.throwDuration(), throwLength(controller, spinning), tick + 1e-9, "without a release: on time");
     }
 
+    @Test
+    void theCatchAfterAThrowMeetsTheObjectAsTheTaskOrTheThrowPolicySays() {
+        NominalController taskCatch = new NominalController(model, config.withCatchAfterThrow(new CatchStyle(0.1, 0.45)),
+                TestSupport.object("sphere"), obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
+        CatchPlanner.Plan throwIn = taskCatch.start(observe(0, model.poseVector("neutral"), false)).plan();
+        assertEquals(config.catchVelocityFraction(), throwIn.palmVelocity().y() / throwIn.objectVelocity().y(), 1e-9,
+                "the throw-in is caught as the controller's own (sec. 3.6: 70 %)");
+        CatchPlanner.Plan afterThrow = catchAfterThrow(taskCatch);
+        assertEquals(config.interceptionHeight() + 0.1, afterThrow.objectPosition().y(), 1e-9, "met on the raised plane");
+        assertEquals(0.45, afterThrow.palmVelocity().y() / afterThrow.objectVelocity().y(), 1e-9);
+
+        ThrowPolicy choosing = new ThrowPolicy() {
+            @Override
+            public ThrowParameters decide(Observation observation) {
+                return config.nominalThrows().forHeight(1.2);
+            }
+
+            @Override
+            public java.util.Optional<CatchStyle> catchAfterThrow() {
+                return java.util.Optional.of(new CatchStyle(-0.05, 0.3));
+            }
+        };
+        NominalController policyCatch = new NominalController(model, config.withCatchAfterThrow(new CatchStyle(0.1, 0.45)),
+                TestSupport.object("sphere"), choosing, GRAVITY);
+        CatchPlanner.Plan chosen = catchAfterThrow(policyCatch);
+        assertEquals(config.interceptionHeight() - 0.05, chosen.objectPosition().y(), 1e-9, "the policy's choice wins");
+        assertEquals(0.3, chosen.palmVelocity().y() / chosen.objectVelocity().y(), 1e-9);
+    }
+
+    /**
+     * The plan of the CATCH that follows the first THROW: the launched sphere flies as {@link
+     * #observe} has it until the first catch ends, then rises at 3 m/s from 1 m (as if thrown).
+     */
+    private CatchPlanner.Plan catchAfterThrow(NominalController c) {
+        RigidState rising = RigidState.at(new Vec3(0.05, 1.0, 0.5), new Vec3(0, 3, 0));
+        ControllerState s = c.start(observe(0, model.poseVector("neutral"), false));
+        double t = tick;
+        boolean caught = false;
+        boolean thrown = false;
+        while (!(thrown && s.phase() == Phase.CATCH)) {
+            Observation o = observe(t, s.targets().clone(), false);
+            c.update(caught ? new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), rising, 0) : o, s);
+            caught |= s.phase() != Phase.CATCH;
+            thrown |= s.phase() == Phase.THROW;
+            t += tick;
+        }
+        return s.plan();
+    }
+
     /** How long THROW lasts when the object is in state {@code object} throughout it (s). */
     private double throwLength(NominalController c, RigidState object) {
         ControllerState s = c.start(observe(0, model.poseVector("neutral"), false));

@@ -10,6 +10,7 @@ import handsim.TestSupport;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
 import handsim.math.EndOverEnd;
@@ -220,5 +221,20 @@ class FlipTaskTest {
         FlipTask late = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm());
         IllegalArgumentException tooLate = assertThrows(IllegalArgumentException.class, () -> late.controller(base));
         assertTrue(tooLate.getMessage().contains("earliest"), tooLate.getMessage());
+    }
+
+    @Test
+    void aCatchAfterEachFlipIsSetPerObjectAndABadOneIsNamed() throws Exception {
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        assertTrue(can.controller(base).catchAfterThrow().isEmpty(), "the shipped can is caught as the controller catches");
+        ObjectNode root = (ObjectNode) Json.mapper().readTree(Files.readString(Home.resolve("configs/tasks/flip.json")));
+        ((ObjectNode) root.at("/objects/can")).putObject("catch").put("planeShift", 0.1).put("velocityFraction", 0.45);
+        ControllerConfig flipping = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm())
+                .controller(base);
+        assertEquals(new CatchStyle(0.1, 0.45), flipping.catchAfterThrow().orElseThrow());
+        assertEquals(base.catchStyle(), flipping.catchStyle(), "the throw-in is still caught as the controller's own");
+        ((ObjectNode) root.at("/objects/can/catch")).put("velocityFraction", 1.5);
+        ConfigException e = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(e.getMessage().contains("velocityFraction") && e.getMessage().contains("1.5"), e.getMessage());
     }
 }
