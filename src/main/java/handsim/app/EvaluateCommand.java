@@ -451,13 +451,17 @@ final class EvaluateCommand implements Callable<Integer> {
         planning.rounds().forEach(r -> rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread()));
         o.put("good_alignment", planning.goodAlignment());
         o.put("lookahead", planning.lookahead());
+        ArrayNode styles = o.putArray("catch_styles");
+        planning.catchStyles().forEach(c -> styles.addObject().put("plane_shift", c.planeShift()).put("velocity_fraction", c.velocityFraction()));
         o.put("decisions", s.decisions());
         o.put("tries", s.tries());
         o.put("unsolved", s.unsolved());
         o.put("mispredicted", s.mispredicted());
+        o.put("promised", s.promised());
         System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
-                + "%d live throws differed from their try in the twin%n", s.decisions(), s.tries(),
-                s.decisions() == 0 ? 0.0 : (double) s.tries() / s.decisions(), s.unsolved(), s.mispredicted());
+                + "%d began with the throw the lookahead had found; %d live throws differed from their try in the twin%n",
+                s.decisions(), s.tries(), s.decisions() == 0 ? 0.0 : (double) s.tries() / s.decisions(), s.unsolved(),
+                s.promised(), s.mispredicted());
     }
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */

@@ -127,7 +127,8 @@ public final class CatchEvaluation {
             if (waiting != null) {
                 plannedLoop = episode.loops().size();
                 long variations = seed ^ 0x9E3779B97F4A7C15L * plannedLoop;
-                liveThrow.set(planner.choose(episode, throwPolicy, variations));
+                ThrowPlanner.Choice choice = planner.choose(episode, throwPolicy, variations);
+                liveThrow.set(choice.throwing(), choice.catching());
                 episode.resume();
                 return null;
             }

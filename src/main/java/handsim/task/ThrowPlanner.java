@@ -1,6 +1,7 @@
 package handsim.task;
 
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
@@ -20,11 +21,14 @@ import java.util.SplittableRandom;
  * throw does exactly what it did in the twin.
  *
  * <p>What the live world sees is an ordinary throw: the planner only chooses the seven THROW
- * parameters, and the object is moved by gravity, damping and contacts alone. What it costs is
+ * parameters and, when it has catch styles, how the catch after the throw meets the object (the
+ * interception plane's height and the palm's speed there, {@link CatchStyle}); the object is moved
+ * by gravity, damping and contacts alone. What it costs is
  * the simulation of the tries (each about 1.5 s of simulated time).
  *
  * <p>A try is better when the task counts its throw a success; with a lookahead, when a throw
- * from the state it leads to succeeds too (no dead end); then, among successes, when the long
+ * from the state it leads to succeeds too (no dead end; that throw is then tried first at the next
+ * decision, so the search there cannot miss it); then, among successes, when the long
  * object lies across the palm, along the palm's z axis (where the next throw succeeds most often;
  * docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The search
  * stops at the first such success lying across within {@code goodAlignment}; when none of a
@@ -53,16 +57,26 @@ public final class ThrowPlanner {
      *     throw; a round after the first begins only when no earlier try was a success leading on
      * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
      * @param lookahead throws tried at most from a successful try's next state (the policy's, then
-     *     variations by the first round's spread); the try counts as a dead end when none succeeds;
+     *     variations by the first round's spread; the first that succeeds is tried first when the live
+     *     hand reaches that state); the try counts as a dead end when none succeeds;
      *     0: no lookahead
+     * @param catchStyles how the catch after a tried throw meets the object, in turn: a decision's
+     *     try k (and the lookahead's try k from each next state) is caught with style k mod their
+     *     number; none: every catch as the controller's own
      */
-    public record Config(List<Round> rounds, double goodAlignment, int lookahead) {
+    public record Config(List<Round> rounds, double goodAlignment, int lookahead, List<CatchStyle> catchStyles) {
 
         public Config {
             rounds = List.copyOf(rounds);
+            catchStyles = List.copyOf(catchStyles);
             if (rounds.isEmpty()) {
                 throw new IllegalArgumentException("a planner needs at least one round");
             }
+        }
+
+        /** Settings whose tries are all caught as the controller's own. */
+        public Config(List<Round> rounds, double goodAlignment, int lookahead) {
+            this(rounds, goodAlignment, lookahead, List.of());
         }
 
         /** The file's own settings: those of an object without an entry under {@code objects}. */
@@ -77,7 +91,7 @@ public final class ThrowPlanner {
          */
         public static Config parse(Json j, String object) {
             j.allow("comment");
-            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j));
+            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j), catchStyles(j));
             Config chosen = file;
             if (j.has("objects")) {
                 Json objects = j.get("objects");
@@ -85,7 +99,8 @@ public final class ThrowPlanner {
                     Json entry = objects.get(name);
                     entry.allow("comment");
                     Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(), file.goodAlignment(),
-                            entry.has("lookahead") ? lookahead(entry) : file.lookahead());
+                            entry.has("lookahead") ? lookahead(entry) : file.lookahead(),
+                            entry.has("catchStyles") ? catchStyles(entry) : file.catchStyles());
                     entry.requireNoUnknownFields();
                     if (name.equals(object)) {
                         chosen = own;
@@ -98,6 +113,15 @@ public final class ThrowPlanner {
 
         private static int lookahead(Json j) {
             return j.integer("lookahead", 0, 10000);
+        }
+
+        private static List<CatchStyle> catchStyles(Json j) {
+            return j.has("catchStyles") ? j.array("catchStyles").stream().map(CatchStyle::parse).toList() : List.of();
+        }
+
+        /** How try {@code k} of a search is caught: null for the controller's own. */
+        CatchStyle catchStyle(int k) {
+            return catchStyles.isEmpty() ? null : catchStyles.get(k % catchStyles.size());
         }
 
         private static List<Round> rounds(Json j) {
@@ -116,27 +140,30 @@ public final class ThrowPlanner {
 
     /**
      * The planner's work so far: decisions, tries (the lookahead's included), decisions where no
-     * try succeeded, and live throws whose loop differed in any way from the chosen try's (0
-     * while the twin steps on bit for bit).
+     * try succeeded, live throws whose loop differed in any way from the chosen try's (0 while the
+     * twin steps on bit for bit; a promised throw that failed counts too), and decisions that began
+     * with the throw the lookahead had found to succeed from their state (promised).
      */
-    public record Stats(int decisions, int tries, int unsolved, int mispredicted) {
+    public record Stats(int decisions, int tries, int unsolved, int mispredicted, int promised) {
 
-        public static final Stats NONE = new Stats(0, 0, 0, 0);
+        public static final Stats NONE = new Stats(0, 0, 0, 0, 0);
 
         public Stats plus(Stats o) {
-            return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted);
+            return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted,
+                    promised + o.promised);
         }
     }
 
     /**
-     * One throw played out in the twin: whether it succeeded and, if so, whether a throw from its
-     * next state did too ({@code open}); the loop it made there (null if it diverged).
+     * One throw played out in the twin: whether it succeeded and, with a lookahead, the throw from
+     * its next state that succeeded too ({@code next}, null when none did; without a lookahead a
+     * success counts as leading on); the loop it made there (null if it diverged).
      */
-    private record Trial(ThrowParameters parameters, boolean success, boolean open, double reward, double alignment,
-            LoopRecord loop) {
+    private record Trial(Choice choice, boolean success, boolean open, double reward, double alignment,
+            LoopRecord loop, Continuation next) {
 
-        static Trial failed(ThrowParameters parameters) {
-            return new Trial(parameters, false, false, Double.NEGATIVE_INFINITY, 0, null);
+        static Trial failed(Choice choice) {
+            return new Trial(choice, false, false, Double.NEGATIVE_INFINITY, 0, null, null);
         }
 
         /** A success that leads on: the kind of try the search looks for. */
@@ -154,10 +181,16 @@ public final class ThrowPlanner {
             return success ? alignment > o.alignment : reward > o.reward;
         }
 
-        Trial leadingOn(boolean leadsOn) {
-            return new Trial(parameters, success, leadsOn, reward, alignment, loop);
+        Trial leadingOn(Continuation c) {
+            return new Trial(choice, success, c != null, reward, alignment, loop, c);
         }
     }
+
+    /** A throw and how its catch meets the object (null: as the controller's own): what the planner chooses. */
+    public record Choice(ThrowParameters throwing, CatchStyle catching) {}
+
+    /** A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads to. */
+    private record Continuation(Observation state, Choice choice) {}
 
     private final Config config;
     private final ThrowTask task;
@@ -168,8 +201,11 @@ public final class ThrowPlanner {
     private int tries;
     private int unsolved;
     private int mispredicted;
+    private int promisedDecisions;
     /** The loop the last chosen throw made in the twin, until {@link #check}ed against the live one. */
     private LoopRecord expected;
+    /** The lookahead's successful throw from the state the last chosen throw leads to, tried first there. */
+    private Continuation promised;
 
     /**
      * @param twin an episode in a world of its own (its own engine, {@code IsolatedEngine}), with
@@ -195,7 +231,7 @@ public final class ThrowPlanner {
     }
 
     public Stats stats() {
-        return new Stats(decisions, tries, unsolved, mispredicted);
+        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions);
     }
 
     /**
@@ -204,24 +240,30 @@ public final class ThrowPlanner {
      * lookahead, the first from each next state); {@code seed} seeds the variations (the same
      * seed and state give the same choice).
      */
-    public ThrowParameters choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
+    public Choice choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
         CatchThrowEpisode.Checkpoint now = live.checkpoint();
         SplittableRandom rng = new SplittableRandom(seed);
         ThrowParameters proposal = policy.decide(live.waiting());
         double[] centre = space.toAction(proposal);
         Trial best = null;
+        if (promised != null && promised.state().sameValues(live.waiting())) {
+            promisedDecisions++;
+            best = judge(play(now, promised.choice()), policy, rng);
+            if (!best.success()) {
+                mispredicted++; // the twin had shown this throw succeed from this very state
+            }
+        }
+        promised = null;
+        int k = 0;
         search:
         for (int round = 0; round < config.rounds().size(); round++) {
-            if (round > 0 && best.good()) {
+            if (best != null && best.good() && (round > 0 || best.alignment() >= config.goodAlignment())) {
                 break;
             }
             Round r = config.rounds().get(round);
-            for (int k = 0; k < r.candidates(); k++) {
-                boolean first = round == 0 && k == 0;
-                Trial t = play(now, first ? proposal : space.fromAction(vary(centre, r.spread(), rng)));
-                if (t.success() && config.lookahead() > 0) {
-                    t = t.leadingOn(leadsOn(policy, rng));
-                }
+            for (int c = 0; c < r.candidates(); c++, k++) {
+                ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, r.spread(), rng));
+                Trial t = judge(play(now, new Choice(candidate, config.catchStyle(k))), policy, rng);
                 if (best == null || t.betterThan(best)) {
                     best = t;
                 }
@@ -238,7 +280,8 @@ public final class ThrowPlanner {
             throw new IllegalStateException("the twin world shares the live world's engine: give it one of its own (IsolatedEngine)");
         }
         expected = best.loop();
-        return best.parameters();
+        promised = best.next();
+        return best.choice();
     }
 
     /** Compares the loop the live episode made with the chosen throw to the one it made in the twin. */
@@ -249,17 +292,25 @@ public final class ThrowPlanner {
         expected = null;
     }
 
-    /** Whether a throw from the twin's state now (a successful try's next decision) succeeds too. */
-    private boolean leadsOn(ThrowPolicy policy, SplittableRandom rng) {
+    /** With a lookahead, whether a successful try leads on: a throw from its next state succeeds too. */
+    private Trial judge(Trial t, ThrowPolicy policy, SplittableRandom rng) {
+        return t.success() && config.lookahead() > 0 ? t.leadingOn(continuation(policy, rng)) : t;
+    }
+
+    /** A throw from the twin's state now (a successful try's next decision) that succeeds too, or null. */
+    private Continuation continuation(ThrowPolicy policy, SplittableRandom rng) {
         CatchThrowEpisode.Checkpoint next = twin.checkpoint();
-        ThrowParameters proposal = policy.decide(twin.waiting());
+        Observation state = twin.waiting();
+        ThrowParameters proposal = policy.decide(state);
         double[] centre = space.toAction(proposal);
         for (int j = 0; j < config.lookahead(); j++) {
-            if (play(next, j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng))).success()) {
-                return true;
+            ThrowParameters candidate = j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng));
+            Choice choice = new Choice(candidate, config.catchStyle(j));
+            if (play(next, choice).success()) {
+                return new Continuation(state, choice);
             }
         }
-        return false;
+        return null;
     }
 
     private static double[] vary(double[] centre, double spread, SplittableRandom rng) {
@@ -278,10 +329,10 @@ public final class ThrowPlanner {
      * Plays {@code candidate} out in the twin, from {@code from} to the next throw's decision (where
      * the twin then waits) or the end of the episode. Without a lookahead a success counts as open.
      */
-    private Trial play(CatchThrowEpisode.Checkpoint from, ThrowParameters candidate) {
+    private Trial play(CatchThrowEpisode.Checkpoint from, Choice candidate) {
         tries++;
         twin.restore(from);
-        twinThrow.set(candidate);
+        twinThrow.set(candidate.throwing(), candidate.catching());
         Observation next;
         try {
             twin.resume();
@@ -294,7 +345,7 @@ public final class ThrowPlanner {
         }
         LoopRecord made = twin.loops().get(from.loopCount());
         boolean success = next != null && task.success(made);
-        return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made);
+        return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made, null);
     }
 
     /** |long axis . palm z| (1 for an object without a long axis): 1 when the object lies across the palm. */

@@ -1,6 +1,7 @@
 package handsim.task;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,6 +9,7 @@ import handsim.TestSupport;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
@@ -105,6 +107,44 @@ class ThrowPlannerTest {
     }
 
     @Test
+    void theThrowALookaheadFoundIsTriedFirstWhenTheLiveHandGetsThereAndSucceeds() {
+        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation looking = nominalFlip().planned(withLookahead, twin);
+            assertEquals(3, looking.successesInARow(looking.runWhileSuccessful(live, NOMINAL_FAILS, 3)));
+            ThrowPlanner.Stats s = looking.plannerStats();
+            // every chosen try led on (the can's flips succeed often: 0 unsolved in 80 decisions, above),
+            // so the second and third decisions began with the throw the lookahead had found for their
+            // very state; it succeeded live as in the twin (a failed promise counts as mispredicted)
+            assertEquals(3, s.decisions());
+            assertEquals(2, s.promised(), s.toString());
+            assertEquals(0, s.unsolved(), s.toString());
+            assertEquals(0, s.mispredicted(), s.toString());
+        }
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation plain = nominalFlip().planned(shipped, twin);
+            plain.runWhileSuccessful(live, NOMINAL_FAILS, 3);
+            assertEquals(0, plain.plannerStats().promised(), "without a lookahead nothing is promised");
+        }
+    }
+
+    @Test
+    void theLiveCatchMeetsTheObjectAsTheChosenTrysCatchDidInTheTwin() {
+        // neither style is the controller's own (0, 0.7): a live catch made as the controller's own would differ
+        List<CatchStyle> styles = List.of(new CatchStyle(0.05, 0.5), new CatchStyle(-0.03, 0.6));
+        ThrowPlanner.Config withStyles = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 0, styles);
+        assertEquals(styles.get(0), withStyles.catchStyle(0));
+        assertEquals(styles.get(1), withStyles.catchStyle(3), "try k is caught with style k mod 2");
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation planned = nominalFlip().planned(withStyles, twin);
+            assertEquals(2, planned.successesInARow(planned.runWhileSuccessful(live, NOMINAL_FAILS, 2)));
+            ThrowPlanner.Stats s = planned.plannerStats();
+            // records compare their doubles exactly: each live loop, its catch included, was the twin's
+            assertEquals(0, s.mispredicted(), s.toString());
+        }
+    }
+
+    @Test
     void anObjectsOwnRoundsAndLookaheadReplaceTheFilesForThatObjectOnly() {
         Json file = Json.parse("planner.json", "{\"rounds\": [{\"candidates\": 24, \"spread\": 0.1}, {\"candidates\": 24, \"spread\": 0.3}], "
                 + "\"goodAlignment\": 0.9, \"lookahead\": 2, \"objects\": {\"club\": {\"rounds\": [{\"candidates\": 60, \"spread\": 0.05}]}}}");
@@ -119,6 +159,14 @@ class ThrowPlannerTest {
                 .replace("\"club\":{", "\"club\":{\"lookahead\":7,")), "club");
         assertEquals(7, looking.lookahead(), "an object's own lookahead replaces the file's");
         assertEquals(club.rounds(), looking.rounds());
+        assertEquals(List.of(), club.catchStyles(), "no styles: every try caught as the controller's own");
+        assertNull(club.catchStyle(0));
+        ThrowPlanner.Config styled = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+                .replace("\"club\":{", "\"club\":{\"catchStyles\":[{\"planeShift\":0.1,\"velocityFraction\":0.45}],")), "club");
+        assertEquals(List.of(new CatchStyle(0.1, 0.45)), styled.catchStyles());
+        assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+                .replace("\"club\":{", "\"club\":{\"catchStyles\":[{\"planeShift\":0.1,\"velocityFraction\":0.45}],")), "can")
+                .catchStyles(), "the club's styles are the club's only");
     }
 
     @Test
