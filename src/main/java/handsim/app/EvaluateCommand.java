@@ -452,7 +452,8 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("good_alignment", planning.goodAlignment());
         o.put("lookahead", planning.lookahead());
         ArrayNode styles = o.putArray("catch_styles");
-        planning.catchStyles().forEach(c -> styles.addObject().put("plane_shift", c.planeShift()).put("velocity_fraction", c.velocityFraction()));
+        planning.catchStyles().forEach(c -> styles.addObject().put("plane_shift", c.planeShift())
+                .put("velocity_fraction", c.velocityFraction()));
         o.put("decisions", s.decisions());
         o.put("tries", s.tries());
         o.put("unsolved", s.unsolved());

@@ -16,6 +16,7 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -127,8 +128,8 @@ class NominalControllerTest {
             }
 
             @Override
-            public java.util.Optional<CatchStyle> catchAfterThrow() {
-                return java.util.Optional.of(new CatchStyle(-0.05, 0.3));
+            public Optional<CatchStyle> catchAfterThrow() {
+                return Optional.of(new CatchStyle(-0.05, 0.3));
             }
         };
         NominalController policyCatch = new NominalController(model, config.withCatchAfterThrow(new CatchStyle(0.1, 0.45)),
