@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
@@ -448,21 +449,28 @@ final class EvaluateCommand implements Callable<Integer> {
                 ThrowPlanner.Stats::plus);
         ObjectNode o = out.putObject("planner");
         ArrayNode rounds = o.putArray("rounds");
-        planning.rounds().forEach(r -> rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread()));
+        planning.rounds().forEach(r -> putStyles(rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread())
+                .putArray("catch_styles"), r.catchStyles()));
         o.put("good_alignment", planning.goodAlignment());
         o.put("lookahead", planning.lookahead());
-        ArrayNode styles = o.putArray("catch_styles");
-        planning.catchStyles().forEach(c -> styles.addObject().put("plane_shift", c.planeShift())
-                .put("velocity_fraction", c.velocityFraction()));
+        putStyles(o.putArray("catch_styles"), planning.catchStyles());
+        putStyles(o.putArray("throw_in_styles"), planning.throwInStyles());
         o.put("decisions", s.decisions());
         o.put("tries", s.tries());
         o.put("unsolved", s.unsolved());
         o.put("mispredicted", s.mispredicted());
         o.put("promised", s.promised());
+        o.put("restyled_catches", s.restyledCatches());
+        o.put("restyled_throw_ins", s.restyledThrowIns());
         System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
-                + "%d began with the throw the lookahead had found; %d live throws differed from their try in the twin%n",
+                + "%d began with the throw the lookahead had found; %d live loops differed from their try in the twin; "
+                + "%d throws and %d throw-ins caught otherwise than the controller's own way%n",
                 s.decisions(), s.tries(), s.decisions() == 0 ? 0.0 : (double) s.tries() / s.decisions(), s.unsolved(),
-                s.promised(), s.mispredicted());
+                s.promised(), s.mispredicted(), s.restyledCatches(), s.restyledThrowIns());
+    }
+
+    private static void putStyles(ArrayNode out, List<CatchStyle> styles) {
+        styles.forEach(c -> out.addObject().put("plane_shift", c.planeShift()).put("velocity_fraction", c.velocityFraction()));
     }
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */

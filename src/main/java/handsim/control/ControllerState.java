@@ -21,8 +21,11 @@ public final class ControllerState {
     /** Simulated time at which the planned interception ends CATCH. */
     double catchEnd;
     ThrowParameters currentThrow;
-    /** How the catch after the current or last THROW meets the object (null before the first: the controller's own). */
-    CatchStyle catchAfterThrow;
+    /**
+     * How the current or coming catch meets the object: the throw-in's as the controller was
+     * started, each later one as chosen when its THROW began; null: the controller's own way.
+     */
+    CatchStyle catchStyle;
     /** The hand closed on a contact since the current CATCH began. */
     boolean closedOnContact;
     HandPose handPose;
@@ -97,7 +100,7 @@ public final class ControllerState {
         c.plannedAt = plannedAt;
         c.catchEnd = catchEnd;
         c.currentThrow = currentThrow;
-        c.catchAfterThrow = catchAfterThrow;
+        c.catchStyle = catchStyle;
         c.closedOnContact = closedOnContact;
         c.handPose = handPose;
         c.poseFrom = poseFrom.clone();

@@ -75,7 +75,13 @@ public final class NominalController {
 
     /** A fresh state beginning in CATCH at the observation's time, planned from its object state. */
     public ControllerState start(Observation obs) {
+        return start(obs, null);
+    }
+
+    /** {@link #start} with the throw-in met as {@code throwIn} says (null: the controller's own way). */
+    public ControllerState start(Observation obs, CatchStyle throwIn) {
         ControllerState s = new ControllerState(model.dofCount());
+        s.catchStyle = throwIn;
         System.arraycopy(obs.q(), 0, s.ikSolution, 0, s.ikSolution.length);
         System.arraycopy(obs.q(), 0, s.targets, 0, s.targets.length);
         s.handPose = HandPose.NEUTRAL;
@@ -160,7 +166,7 @@ public final class NominalController {
             case THROW -> {
                 ThrowParameters p = throwPolicy.decide(obs);
                 s.currentThrow = p;
-                s.catchAfterThrow = throwPolicy.catchAfterThrow().or(config::catchAfterThrow).orElse(null);
+                s.catchStyle = throwPolicy.catchAfterThrow().or(config::catchAfterThrow).orElse(null);
                 double tt = config.throwDuration();
                 Vec3 endVelocity = p.dOffset().times(config.throwEndSpeedFactor() / tt);
                 Quat end = Quat.fromRotationVector(p.rTarget()).mul(neutralPalm.rotation());
@@ -182,7 +188,7 @@ public final class NominalController {
     private void planCatch(Observation obs, Vec3 p0, Vec3 v0, Quat r0, ControllerState s) {
         CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
                 palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()),
-                s.catchAfterThrow == null ? config.catchStyle() : s.catchAfterThrow);
+                s.catchStyle == null ? config.catchStyle() : s.catchStyle);
         s.plan = plan;
         s.plannedFrom = obs.object();
         s.plannedAt = obs.time();

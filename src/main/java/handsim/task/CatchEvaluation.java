@@ -115,7 +115,7 @@ public final class CatchEvaluation {
     /**
      * One tick of an episode this evaluation started; returns the loop record finished in it, or
      * null. With planning, a tick at a throw's decision chooses the throw ({@link ThrowPlanner})
-     * and begins it. A divergence names the episode's seed and loop, so the run that failed can
+     * and begins it (the throw-in's catch was chosen at the start). A divergence names the episode's seed and loop, so the run that failed can
      * be replayed.
      */
     public LoopRecord tick(CatchThrowEpisode episode, long seed) {
@@ -198,6 +198,10 @@ public final class CatchEvaluation {
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
                 controller, task, limits);
         episode.start(thrown, launch, seed);
+        if (planner != null) {
+            episode.catchThrowInAs(planner.chooseThrowInCatch(episode, throwPolicy, seed));
+            plannedLoop = 0;
+        }
         return episode;
     }
 

@@ -1,5 +1,6 @@
 package handsim.task;
 
+import handsim.control.CatchStyle;
 import handsim.control.ControllerState;
 import handsim.control.NominalController;
 import handsim.control.Observation;
@@ -91,6 +92,19 @@ public final class CatchThrowEpisode {
         state = controller.start(observe());
         System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
         beginLoop();
+    }
+
+    /**
+     * Before the first tick: the controller starts again from the same observation, meeting the
+     * launched object as {@code style} says (null: its own way). A planner chooses it ({@link
+     * ThrowPlanner#chooseThrowInCatch}).
+     */
+    public void catchThrowInAs(CatchStyle style) {
+        if (!loops.isEmpty() || sim.time() != current.loopStart || waiting != null) {
+            throw new IllegalStateException("the throw-in's catch is chosen before the episode's first tick");
+        }
+        state = controller.start(observe(), style);
+        System.arraycopy(state.targets(), 0, loop.targets(), 0, q.length);
     }
 
     public Simulator sim() {

@@ -8,6 +8,7 @@ import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.SimulationDiverged;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 
@@ -34,17 +35,31 @@ import java.util.SplittableRandom;
  * stops at the first such success lying across within {@code goodAlignment}; when none of a
  * round's tries was one, the next round goes on with its own spread (an object may have rounds of
  * its own: the club's are many and narrow, docs/flip-experiments.md, eighteenth session).
+ *
+ * <p>Before an episode's first tick the planner may likewise choose how the hand catches the
+ * throw-in ({@link #chooseThrowInCatch}): only the catch, the launch is the episode's.
  */
 public final class ThrowPlanner {
 
     /**
      * One round of the search: up to {@code candidates} throws, each the proposal varied by a
-     * Gaussian of standard deviation {@code spread} in the policy's action units ([-1, 1] per entry).
+     * Gaussian of standard deviation {@code spread} in the policy's action units ([-1, 1] per
+     * entry); with {@code catchStyles}, the round's try c is caught with style c mod their number
+     * (instead of as the config's {@link Config#catchStyles} say).
      */
-    public record Round(int candidates, double spread) {
+    public record Round(int candidates, double spread, List<CatchStyle> catchStyles) {
+
+        public Round {
+            catchStyles = List.copyOf(catchStyles);
+        }
+
+        /** A round whose tries are caught as the config says. */
+        public Round(int candidates, double spread) {
+            this(candidates, spread, List.of());
+        }
 
         static Round parse(Json j) {
-            Round r = new Round(j.integer("candidates", 1, 10000), j.number("spread", 0, 2));
+            Round r = new Round(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), Config.styles(j, "catchStyles"));
             j.requireNoUnknownFields();
             return r;
         }
@@ -63,12 +78,17 @@ public final class ThrowPlanner {
      * @param catchStyles how the catch after a tried throw meets the object, in turn: a decision's
      *     try k (and the lookahead's try k from each next state) is caught with style k mod their
      *     number; none: every catch as the controller's own
+     * @param throwInStyles ways to catch the episode's throw-in tried after the controller's own, in
+     *     order, until one holds the object and (with a lookahead) leads on ({@link
+     *     #chooseThrowInCatch}); none: the throw-in is caught as the controller's own, untried
      */
-    public record Config(List<Round> rounds, double goodAlignment, int lookahead, List<CatchStyle> catchStyles) {
+    public record Config(List<Round> rounds, double goodAlignment, int lookahead, List<CatchStyle> catchStyles,
+            List<CatchStyle> throwInStyles) {
 
         public Config {
             rounds = List.copyOf(rounds);
             catchStyles = List.copyOf(catchStyles);
+            throwInStyles = List.copyOf(throwInStyles);
             if (rounds.isEmpty()) {
                 throw new IllegalArgumentException("a planner needs at least one round");
             }
@@ -76,7 +96,7 @@ public final class ThrowPlanner {
 
         /** Settings whose tries are all caught as the controller's own. */
         public Config(List<Round> rounds, double goodAlignment, int lookahead) {
-            this(rounds, goodAlignment, lookahead, List.of());
+            this(rounds, goodAlignment, lookahead, List.of(), List.of());
         }
 
         /** The file's own settings: those of an object without an entry under {@code objects}. */
@@ -85,13 +105,15 @@ public final class ThrowPlanner {
         }
 
         /**
-         * The settings for {@code object}: the file's {@code rounds} and {@code lookahead}, each
-         * replaced by the one under {@code objects.<object>} when that entry has it (every
-         * object's entry is checked, whichever object is planned).
+         * The settings for {@code object}: the file's {@code rounds}, {@code lookahead}, {@code
+         * catchStyles} and {@code throwInStyles}, each replaced by the one under {@code
+         * objects.<object>} when that entry has it (every object's entry is checked, whichever
+         * object is planned).
          */
         public static Config parse(Json j, String object) {
             j.allow("comment");
-            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j), catchStyles(j));
+            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j), styles(j, "catchStyles"),
+                    styles(j, "throwInStyles"));
             Config chosen = file;
             if (j.has("objects")) {
                 Json objects = j.get("objects");
@@ -100,7 +122,8 @@ public final class ThrowPlanner {
                     entry.allow("comment");
                     Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(), file.goodAlignment(),
                             entry.has("lookahead") ? lookahead(entry) : file.lookahead(),
-                            entry.has("catchStyles") ? catchStyles(entry) : file.catchStyles());
+                            entry.has("catchStyles") ? styles(entry, "catchStyles") : file.catchStyles(),
+                            entry.has("throwInStyles") ? styles(entry, "throwInStyles") : file.throwInStyles());
                     entry.requireNoUnknownFields();
                     if (name.equals(object)) {
                         chosen = own;
@@ -115,8 +138,8 @@ public final class ThrowPlanner {
             return j.integer("lookahead", 0, 10000);
         }
 
-        private static List<CatchStyle> catchStyles(Json j) {
-            return j.has("catchStyles") ? j.array("catchStyles").stream().map(CatchStyle::parse).toList() : List.of();
+        static List<CatchStyle> styles(Json j, String field) {
+            return j.has(field) ? j.array(field).stream().map(CatchStyle::parse).toList() : List.of();
         }
 
         /** How try {@code k} of a search is caught: null for the controller's own. */
@@ -139,18 +162,21 @@ public final class ThrowPlanner {
     }
 
     /**
-     * The planner's work so far: decisions, tries (the lookahead's included), decisions where no
-     * try succeeded, live throws whose loop differed in any way from the chosen try's (0 while the
-     * twin steps on bit for bit; a promised throw that failed counts too), and decisions that began
-     * with the throw the lookahead had found to succeed from their state (promised).
+     * The planner's work so far: throw decisions, tries (the lookahead's and the throw-in's
+     * included), decisions where no try succeeded, live loops whose record differed in any way
+     * from the chosen try's (0 while the twin steps on bit for bit; a promised throw that failed
+     * counts too), decisions that began with the throw the lookahead had found to succeed from
+     * their state (promised), decisions whose throw is caught otherwise than the controller's own
+     * way, and throw-ins caught otherwise.
      */
-    public record Stats(int decisions, int tries, int unsolved, int mispredicted, int promised) {
+    public record Stats(int decisions, int tries, int unsolved, int mispredicted, int promised, int restyledCatches,
+            int restyledThrowIns) {
 
-        public static final Stats NONE = new Stats(0, 0, 0, 0, 0);
+        public static final Stats NONE = new Stats(0, 0, 0, 0, 0, 0, 0);
 
         public Stats plus(Stats o) {
             return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted,
-                    promised + o.promised);
+                    promised + o.promised, restyledCatches + o.restyledCatches, restyledThrowIns + o.restyledThrowIns);
         }
     }
 
@@ -186,7 +212,10 @@ public final class ThrowPlanner {
         }
     }
 
-    /** A throw and how its catch meets the object (null: as the controller's own): what the planner chooses. */
+    /**
+     * A throw and how its catch meets the object (null: as the controller's own): what the planner
+     * chooses (for the throw-in only the catch, the throw null).
+     */
     public record Choice(ThrowParameters throwing, CatchStyle catching) {}
 
     /** A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads to. */
@@ -202,6 +231,8 @@ public final class ThrowPlanner {
     private int unsolved;
     private int mispredicted;
     private int promisedDecisions;
+    private int restyledCatches;
+    private int restyledThrowIns;
     /** The loop the last chosen throw made in the twin, until {@link #check}ed against the live one. */
     private LoopRecord expected;
     /** The lookahead's successful throw from the state the last chosen throw leads to, tried first there. */
@@ -231,7 +262,7 @@ public final class ThrowPlanner {
     }
 
     public Stats stats() {
-        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions);
+        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions, restyledCatches, restyledThrowIns);
     }
 
     /**
@@ -263,7 +294,9 @@ public final class ThrowPlanner {
             Round r = config.rounds().get(round);
             for (int c = 0; c < r.candidates(); c++, k++) {
                 ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, r.spread(), rng));
-                Trial t = judge(play(now, new Choice(candidate, config.catchStyle(k))), policy, rng);
+                CatchStyle catching = r.catchStyles().isEmpty() ? config.catchStyle(k)
+                        : r.catchStyles().get(c % r.catchStyles().size());
+                Trial t = judge(play(now, new Choice(candidate, catching)), policy, rng);
                 if (best == null || t.betterThan(best)) {
                     best = t;
                 }
@@ -276,12 +309,71 @@ public final class ThrowPlanner {
         if (!best.success()) {
             unsolved++;
         }
+        if (best.choice().catching() != null) {
+            restyledCatches++;
+        }
         if (live.sim().captureState().randomSeed() != now.world().randomSeed()) {
             throw new IllegalStateException("the twin world shares the live world's engine: give it one of its own (IsolatedEngine)");
         }
         expected = best.loop();
         promised = best.next();
         return best.choice();
+    }
+
+    /**
+     * How {@code live}, started and not yet ticked, should catch its throw-in: the controller's own
+     * way and then each of the config's throw-in styles are played out in the twin up to the first
+     * throw's decision, until one holds the object and, with a lookahead, a throw from there
+     * succeeds (that throw is then tried first at the decision). Otherwise the best as {@link
+     * Trial#betterThan} ranks them, the earliest among equals. Null: the controller's own way,
+     * also when the config has no throw-in styles (nothing is tried then).
+     */
+    public CatchStyle chooseThrowInCatch(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
+        promised = null;
+        if (config.throwInStyles().isEmpty()) {
+            return null;
+        }
+        CatchThrowEpisode.Checkpoint start = live.checkpoint();
+        SplittableRandom rng = new SplittableRandom(seed);
+        List<CatchStyle> styles = new ArrayList<>();
+        styles.add(null);
+        styles.addAll(config.throwInStyles());
+        Trial best = null;
+        for (CatchStyle style : styles) {
+            Trial t = judge(playThrowIn(start, style), policy, rng);
+            if (best == null || t.betterThan(best)) {
+                best = t;
+            }
+            if (best.good()) {
+                break;
+            }
+        }
+        if (best.choice().catching() != null) {
+            restyledThrowIns++;
+        }
+        expected = best.loop();
+        promised = best.next();
+        return best.choice().catching();
+    }
+
+    /** The throw-in caught as {@code style} says in the twin, up to the first throw's decision: a success if it holds. */
+    private Trial playThrowIn(CatchThrowEpisode.Checkpoint start, CatchStyle style) {
+        tries++;
+        twin.restore(start);
+        twin.catchThrowInAs(style);
+        Choice choice = new Choice(null, style);
+        Observation next;
+        try {
+            next = twin.runUntilThrowDue();
+        } catch (SimulationDiverged e) {
+            return Trial.failed(choice);
+        }
+        if (twin.loops().isEmpty()) {
+            return Trial.failed(choice);
+        }
+        LoopRecord made = twin.loops().get(0);
+        boolean held = next != null && made.caught();
+        return new Trial(choice, held, held, 0, held ? alignment(next) : 0, made, null);
     }
 
     /** Compares the loop the live episode made with the chosen throw to the one it made in the twin. */

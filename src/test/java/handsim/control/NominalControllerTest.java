@@ -117,6 +117,10 @@ class NominalControllerTest {
         CatchPlanner.Plan throwIn = taskCatch.start(observe(0, model.poseVector("neutral"), false)).plan();
         assertEquals(config.catchVelocityFraction(), throwIn.palmVelocity().y() / throwIn.objectVelocity().y(), 1e-9,
                 "the throw-in is caught as the controller's own (sec. 3.6: 70 %)");
+        CatchPlanner.Plan styledThrowIn = taskCatch.start(observe(0, model.poseVector("neutral"), false), new CatchStyle(-0.05, 0.4))
+                .plan();
+        assertEquals(config.interceptionHeight() - 0.05, styledThrowIn.objectPosition().y(), 1e-9, "a throw-in style of its own");
+        assertEquals(0.4, styledThrowIn.palmVelocity().y() / styledThrowIn.objectVelocity().y(), 1e-9);
         CatchPlanner.Plan afterThrow = catchAfterThrow(taskCatch);
         assertEquals(config.interceptionHeight() + 0.1, afterThrow.objectPosition().y(), 1e-9, "met on the raised plane");
         assertEquals(0.45, afterThrow.palmVelocity().y() / afterThrow.objectVelocity().y(), 1e-9);
