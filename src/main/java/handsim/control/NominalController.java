@@ -8,6 +8,7 @@ import handsim.math.Vec3;
 import handsim.model.HandModel;
 import handsim.model.Site;
 import handsim.sim.ObjectSpec;
+import java.util.Objects;
 
 /**
  * The paper's nominal catch-and-throw controller (sec. 3). A finite state machine CATCH ->
@@ -90,6 +91,19 @@ public final class NominalController {
         enter(Phase.CATCH, obs, s);
         update(obs, s);
         return s;
+    }
+
+    /**
+     * While THROW or GOBACK runs, before the coming catch is planned: that catch meets the object
+     * as {@code style} says. Nothing the hand does before CATCH depends on it, so a planner can
+     * play one throw once and branch its catch here; a throw policy that named {@code style} when
+     * THROW began ({@link ThrowPolicy#catchAfterThrow}) makes the same catch.
+     */
+    public void meetComingCatchAs(ControllerState s, CatchStyle style) {
+        if (s.phase != Phase.THROW && s.phase != Phase.GOBACK) {
+            throw new IllegalStateException("the coming catch is chosen in THROW or GOBACK, not in " + s.phase);
+        }
+        s.catchStyle = Objects.requireNonNull(style, "style");
     }
 
     /**

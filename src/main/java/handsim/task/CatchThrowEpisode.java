@@ -285,6 +285,22 @@ public final class CatchThrowEpisode {
         return react(obs);
     }
 
+    /**
+     * After {@link #resume}: ticks until THROW is over, the hand in GOBACK and the coming catch not
+     * yet planned ({@link #meetComingCatchAs} may still choose it). False when the episode ended first.
+     */
+    public boolean runUntilThrowEnds() {
+        while (status == Status.RUNNING && state.phase() == Phase.THROW) {
+            tickOrWait();
+        }
+        return status == Status.RUNNING;
+    }
+
+    /** In THROW or GOBACK: the coming catch meets the object as {@code style} says ({@link NominalController#meetComingCatchAs}). */
+    public void meetComingCatchAs(CatchStyle style) {
+        controller.meetComingCatchAs(state, style);
+    }
+
     /** Goes on from {@link #runUntilThrowDue}: the controller asks its throw policy and begins the THROW. */
     public void resume() {
         if (waiting == null) {

@@ -179,6 +179,15 @@ public final class FlipTask implements ThrowTask {
     }
 
     /**
+     * Only a throw that turned the object far enough before the hand touched it: another catch
+     * meets it a few hundredths of a second earlier or later, a few degrees of turn apart.
+     */
+    @Override
+    public boolean catchMayMatter(LoopRecord loop) {
+        return flips(loop) >= 1;
+    }
+
+    /**
      * Throws whose object turned between {@code from} and {@code to} in flight (rad), and how
      * many of them were successes of the task.
      */

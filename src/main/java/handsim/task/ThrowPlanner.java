@@ -81,14 +81,22 @@ public final class ThrowPlanner {
      * @param throwInStyles ways to catch the episode's throw-in tried after the controller's own, in
      *     order, until one holds the object and (with a lookahead) leads on ({@link
      *     #chooseThrowInCatch}); none: the throw-in is caught as the controller's own, untried
+     * @param catchBranches other ways to catch a tried throw that turned the object far enough but
+     *     was no success leading on: the throw is played once and its catch played again from where
+     *     THROW ends with each of these in order, until one is ({@link #tryThrow}); the lookahead's
+     *     throws likewise; none: each throw is caught one way
+     * @param lookaheadDepth with a lookahead, how many throws in a row from a try's next state must
+     *     succeed for it to lead on: 1, a throw from its next state succeeds; 2, and a throw from
+     *     that one's next state too (each found among up to {@code lookahead} throws), and so on
      */
     public record Config(List<Round> rounds, double goodAlignment, int lookahead, List<CatchStyle> catchStyles,
-            List<CatchStyle> throwInStyles) {
+            List<CatchStyle> throwInStyles, List<CatchStyle> catchBranches, int lookaheadDepth) {
 
         public Config {
             rounds = List.copyOf(rounds);
             catchStyles = List.copyOf(catchStyles);
             throwInStyles = List.copyOf(throwInStyles);
+            catchBranches = List.copyOf(catchBranches);
             if (rounds.isEmpty()) {
                 throw new IllegalArgumentException("a planner needs at least one round");
             }
@@ -96,7 +104,22 @@ public final class ThrowPlanner {
 
         /** Settings whose tries are all caught as the controller's own. */
         public Config(List<Round> rounds, double goodAlignment, int lookahead) {
-            this(rounds, goodAlignment, lookahead, List.of(), List.of());
+            this(rounds, goodAlignment, lookahead, List.of(), List.of(), List.of(), 1);
+        }
+
+        /** These settings with {@code branches} as their {@link #catchBranches}. */
+        public Config withCatchBranches(List<CatchStyle> branches) {
+            return new Config(rounds, goodAlignment, lookahead, catchStyles, throwInStyles, branches, lookaheadDepth);
+        }
+
+        /** These settings with a lookahead of {@code depth} throws in a row ({@link #lookaheadDepth}). */
+        public Config withLookaheadDepth(int depth) {
+            return new Config(rounds, goodAlignment, lookahead, catchStyles, throwInStyles, catchBranches, depth);
+        }
+
+        /** How many throws in a row a try's lookahead plays: 0 without a lookahead. */
+        int depth() {
+            return lookahead == 0 ? 0 : lookaheadDepth;
         }
 
         /** The file's own settings: those of an object without an entry under {@code objects}. */
@@ -105,25 +128,28 @@ public final class ThrowPlanner {
         }
 
         /**
-         * The settings for {@code object}: the file's {@code rounds}, {@code lookahead}, {@code
-         * catchStyles} and {@code throwInStyles}, each replaced by the one under {@code
-         * objects.<object>} when that entry has it (every object's entry is checked, whichever
-         * object is planned).
+         * The settings for {@code object}: the file's {@code rounds}, {@code goodAlignment}, {@code
+         * lookahead}, {@code lookaheadDepth}, {@code catchStyles}, {@code throwInStyles} and {@code
+         * catchBranches}, each replaced by the one under {@code objects.<object>} when that entry
+         * has it (every object's entry is checked, whichever object is planned).
          */
         public static Config parse(Json j, String object) {
             j.allow("comment");
             Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j), styles(j, "catchStyles"),
-                    styles(j, "throwInStyles"));
+                    styles(j, "throwInStyles"), styles(j, "catchBranches"), lookaheadDepth(j, 1));
             Config chosen = file;
             if (j.has("objects")) {
                 Json objects = j.get("objects");
                 for (String name : objects.fieldNames()) {
                     Json entry = objects.get(name);
                     entry.allow("comment");
-                    Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(), file.goodAlignment(),
+                    Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(),
+                            entry.has("goodAlignment") ? entry.number("goodAlignment", 0, 1) : file.goodAlignment(),
                             entry.has("lookahead") ? lookahead(entry) : file.lookahead(),
                             entry.has("catchStyles") ? styles(entry, "catchStyles") : file.catchStyles(),
-                            entry.has("throwInStyles") ? styles(entry, "throwInStyles") : file.throwInStyles());
+                            entry.has("throwInStyles") ? styles(entry, "throwInStyles") : file.throwInStyles(),
+                            entry.has("catchBranches") ? styles(entry, "catchBranches") : file.catchBranches(),
+                            lookaheadDepth(entry, file.lookaheadDepth()));
                     entry.requireNoUnknownFields();
                     if (name.equals(object)) {
                         chosen = own;
@@ -136,6 +162,10 @@ public final class ThrowPlanner {
 
         private static int lookahead(Json j) {
             return j.integer("lookahead", 0, 10000);
+        }
+
+        private static int lookaheadDepth(Json j, int otherwise) {
+            return j.has("lookaheadDepth") ? j.integer("lookaheadDepth", 1, 5) : otherwise;
         }
 
         static List<CatchStyle> styles(Json j, String field) {
@@ -167,16 +197,18 @@ public final class ThrowPlanner {
      * from the chosen try's (0 while the twin steps on bit for bit; a promised throw that failed
      * counts too), decisions that began with the throw the lookahead had found to succeed from
      * their state (promised), decisions whose throw is caught otherwise than the controller's own
-     * way, and throw-ins caught otherwise.
+     * way, throw-ins caught otherwise, and catches played again from a tried throw's end with
+     * another style ({@link Config#catchBranches}; counted among the tries too).
      */
     public record Stats(int decisions, int tries, int unsolved, int mispredicted, int promised, int restyledCatches,
-            int restyledThrowIns) {
+            int restyledThrowIns, int branches) {
 
-        public static final Stats NONE = new Stats(0, 0, 0, 0, 0, 0, 0);
+        public static final Stats NONE = new Stats(0, 0, 0, 0, 0, 0, 0, 0);
 
         public Stats plus(Stats o) {
             return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted,
-                    promised + o.promised, restyledCatches + o.restyledCatches, restyledThrowIns + o.restyledThrowIns);
+                    promised + o.promised, restyledCatches + o.restyledCatches, restyledThrowIns + o.restyledThrowIns,
+                    branches + o.branches);
         }
     }
 
@@ -218,8 +250,11 @@ public final class ThrowPlanner {
      */
     public record Choice(ThrowParameters throwing, CatchStyle catching) {}
 
-    /** A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads to. */
-    private record Continuation(Observation state, Choice choice) {}
+    /**
+     * A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads
+     * to; with a deeper lookahead, {@code next}: the one found from the state it leads to (else null).
+     */
+    private record Continuation(Observation state, Choice choice, Continuation next) {}
 
     private final Config config;
     private final ThrowTask task;
@@ -233,6 +268,9 @@ public final class ThrowPlanner {
     private int promisedDecisions;
     private int restyledCatches;
     private int restyledThrowIns;
+    private int branches;
+    /** Where the last throw {@link #play}ed in the twin ended THROW (with catch branches only), or null. */
+    private CatchThrowEpisode.Checkpoint throwEnd;
     /** The loop the last chosen throw made in the twin, until {@link #check}ed against the live one. */
     private LoopRecord expected;
     /** The lookahead's successful throw from the state the last chosen throw leads to, tried first there. */
@@ -262,7 +300,8 @@ public final class ThrowPlanner {
     }
 
     public Stats stats() {
-        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions, restyledCatches, restyledThrowIns);
+        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions, restyledCatches, restyledThrowIns,
+                branches);
     }
 
     /**
@@ -279,7 +318,7 @@ public final class ThrowPlanner {
         Trial best = null;
         if (promised != null && promised.state().sameValues(live.waiting())) {
             promisedDecisions++;
-            best = judge(play(now, promised.choice()), policy, rng);
+            best = judge(play(now, promised.choice()), policy, rng, config.depth(), promised.next());
             if (!best.success()) {
                 mispredicted++; // the twin had shown this throw succeed from this very state
             }
@@ -296,7 +335,7 @@ public final class ThrowPlanner {
                 ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, r.spread(), rng));
                 CatchStyle catching = r.catchStyles().isEmpty() ? config.catchStyle(k)
                         : r.catchStyles().get(c % r.catchStyles().size());
-                Trial t = judge(play(now, new Choice(candidate, catching)), policy, rng);
+                Trial t = tryThrow(now, new Choice(candidate, catching), policy, rng, config.depth());
                 if (best == null || t.betterThan(best)) {
                     best = t;
                 }
@@ -340,7 +379,7 @@ public final class ThrowPlanner {
         styles.addAll(config.throwInStyles());
         Trial best = null;
         for (CatchStyle style : styles) {
-            Trial t = judge(playThrowIn(start, style), policy, rng);
+            Trial t = judge(playThrowIn(start, style), policy, rng, config.depth(), null);
             if (best == null || t.betterThan(best)) {
                 best = t;
             }
@@ -384,22 +423,64 @@ public final class ThrowPlanner {
         expected = null;
     }
 
-    /** With a lookahead, whether a successful try leads on: a throw from its next state succeeds too. */
-    private Trial judge(Trial t, ThrowPolicy policy, SplittableRandom rng) {
-        return t.success() && config.lookahead() > 0 ? t.leadingOn(continuation(policy, rng)) : t;
+    /**
+     * Whether a successful try, the twin standing at its next state, leads on: {@code depth}
+     * throws in a row from there succeed, each found among up to {@code lookahead} (0: judged as
+     * played). {@code hint}: a continuation found before from that state, tried first.
+     */
+    private Trial judge(Trial t, ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
+        return depth > 0 && t.success() ? t.leadingOn(continuation(policy, rng, depth, hint)) : t;
     }
 
-    /** A throw from the twin's state now (a successful try's next decision) that succeeds too, or null. */
-    private Continuation continuation(ThrowPolicy policy, SplittableRandom rng) {
+    /**
+     * {@code candidate} played and judged; when it is no success leading on but the task says
+     * another catch may matter, its throw's catch is played again from where THROW ended with
+     * each of the config's catch branches in turn, until one is: the best of them.
+     */
+    private Trial tryThrow(CatchThrowEpisode.Checkpoint from, Choice candidate, ThrowPolicy policy, SplittableRandom rng, int depth) {
+        Trial played = play(from, candidate);
+        CatchThrowEpisode.Checkpoint end = throwEnd; // before the lookahead plays on from the try
+        Trial best = judge(played, policy, rng, depth, null);
+        if (end == null || best.good() || best.loop() == null || !task.catchMayMatter(best.loop())) {
+            return best;
+        }
+        for (CatchStyle style : config.catchBranches()) {
+            if (style.equals(candidate.catching())) {
+                continue;
+            }
+            Trial t = judge(playCatch(end, from.loopCount(), new Choice(candidate.throwing(), style)), policy, rng, depth, null);
+            if (t.betterThan(best)) {
+                best = t;
+            }
+            if (best.good()) {
+                break;
+            }
+        }
+        return best;
+    }
+
+    /**
+     * From the twin's state now (a successful try's next decision), a throw that succeeds and
+     * leads on {@code depth - 1} throws further, or null: {@code hint} first when it was found from
+     * this very state, then the policy's throw and variations by the first round's spread, up to
+     * {@code lookahead} in all.
+     */
+    private Continuation continuation(ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
         CatchThrowEpisode.Checkpoint next = twin.checkpoint();
         Observation state = twin.waiting();
+        if (hint != null && hint.state().sameValues(state)) {
+            Trial t = judge(play(next, hint.choice()), policy, rng, depth - 1, hint.next());
+            if (t.good()) {
+                return new Continuation(state, t.choice(), t.next());
+            }
+        }
         ThrowParameters proposal = policy.decide(state);
         double[] centre = space.toAction(proposal);
         for (int j = 0; j < config.lookahead(); j++) {
             ThrowParameters candidate = j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng));
-            Choice choice = new Choice(candidate, config.catchStyle(j));
-            if (play(next, choice).success()) {
-                return new Continuation(state, choice);
+            Trial t = tryThrow(next, new Choice(candidate, config.catchStyle(j)), policy, rng, depth - 1);
+            if (t.good()) {
+                return new Continuation(state, t.choice(), t.next());
             }
         }
         return null;
@@ -423,19 +504,47 @@ public final class ThrowPlanner {
      */
     private Trial play(CatchThrowEpisode.Checkpoint from, Choice candidate) {
         tries++;
+        throwEnd = null;
         twin.restore(from);
         twinThrow.set(candidate.throwing(), candidate.catching());
         Observation next;
         try {
             twin.resume();
+            if (!config.catchBranches().isEmpty() && twin.runUntilThrowEnds()) {
+                throwEnd = twin.checkpoint();
+            }
+            next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.runUntilThrowDue() : null;
+        } catch (SimulationDiverged e) {
+            throwEnd = null;
+            return Trial.failed(candidate);
+        }
+        return played(from.loopCount(), candidate, next);
+    }
+
+    /**
+     * The catch of the throw that ended THROW at {@code end} played again from there, meeting the
+     * object as {@code candidate} says, to the next throw's decision or the end of the episode.
+     */
+    private Trial playCatch(CatchThrowEpisode.Checkpoint end, int loopCount, Choice candidate) {
+        tries++;
+        branches++;
+        twin.restore(end);
+        twin.meetComingCatchAs(candidate.catching());
+        Observation next;
+        try {
             next = twin.runUntilThrowDue();
         } catch (SimulationDiverged e) {
             return Trial.failed(candidate);
         }
-        if (twin.loops().size() <= from.loopCount()) {
+        return played(loopCount, candidate, next);
+    }
+
+    /** The try whose loop is the twin's loop {@code index}, waiting at {@code next} (null: the episode ended). */
+    private Trial played(int index, Choice candidate, Observation next) {
+        if (twin.loops().size() <= index) {
             return Trial.failed(candidate);
         }
-        LoopRecord made = twin.loops().get(from.loopCount());
+        LoopRecord made = twin.loops().get(index);
         boolean success = next != null && task.success(made);
         return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made, null);
     }

@@ -57,6 +57,14 @@ public interface ThrowTask {
     /** Whether a finished throw loop did what the task asks (and the object was caught). */
     boolean success(LoopRecord loop);
 
+    /**
+     * Whether another way of catching could have made a success of a throw loop that failed: by
+     * default every throw; a throw planner tries other catches only where this says so.
+     */
+    default boolean catchMayMatter(LoopRecord loop) {
+        return true;
+    }
+
     /** The current goal, for drawing. */
     Goal drawing();
 

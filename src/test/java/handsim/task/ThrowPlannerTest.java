@@ -13,6 +13,7 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
+import handsim.control.Phase;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
 import java.util.List;
@@ -37,6 +38,16 @@ class ThrowPlannerTest {
      */
     static final long CLUB_THROW_IN_DROPPED = 9;
 
+    /**
+     * A seed whose nominal club throw flips and is dropped by the controller's own catch (0, 0.7)
+     * but caught lying by one at (0.2, 0.7) (measured: 8 throws from the first decision of seeds
+     * 21-40, each caught 16 ways, docs/flip-experiments.md, twentieth session).
+     */
+    static final long CLUB_BRANCH_SEED = 32;
+
+    /** The catch that makes a success of that seed's nominal throw. */
+    static final CatchStyle CLUB_BRANCH = new CatchStyle(0.2, 0.7);
+
     private CatchEvaluation nominalFlip() {
         return nominalFlip("can");
     }
@@ -45,6 +56,12 @@ class ThrowPlannerTest {
         return CatchEvaluation.nominal(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
                 TestSupport.tasks().create("flip", object));
+    }
+
+    private CatchEvaluation flipWith(String object, ChosenThrow throwing) {
+        ThrowTask task = TestSupport.tasks().create("flip", object);
+        return new CatchEvaluation(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), task, throwing);
     }
 
     private static Simulator engine() {
@@ -145,7 +162,7 @@ class ThrowPlannerTest {
     void theLiveCatchMeetsTheObjectAsTheChosenTrysCatchDidInTheTwin() {
         // neither style is the controller's own (0, 0.7): a live catch made as the controller's own would differ
         List<CatchStyle> styles = List.of(new CatchStyle(0.05, 0.5), new CatchStyle(-0.03, 0.6));
-        ThrowPlanner.Config withStyles = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 0, styles, List.of());
+        ThrowPlanner.Config withStyles = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 0, styles, List.of(), List.of(), 1);
         assertEquals(styles.get(0), withStyles.catchStyle(0));
         assertEquals(styles.get(1), withStyles.catchStyle(3), "try k is caught with style k mod 2");
         try (Simulator live = engine(); Simulator twin = engine()) {
@@ -171,7 +188,7 @@ class ThrowPlannerTest {
     void aThrowInTheControllersOwnCatchDropsIsCaughtAsATwinTriedCatchHeldIt() {
         List<CatchStyle> throwIn = List.of(new CatchStyle(0.2, 0.7), new CatchStyle(0, 0.4));
         ThrowPlanner.Config restyling = new ThrowPlanner.Config(List.of(new ThrowPlanner.Round(1, 0.05)),
-                shipped.goodAlignment(), 0, List.of(), throwIn);
+                shipped.goodAlignment(), 0, List.of(), throwIn, List.of(), 1);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation unplanned = nominalFlip("club");
             assertFalse(unplanned.runWhileSuccessful(live, CLUB_THROW_IN_DROPPED, 1).get(0).caught(),
@@ -205,6 +222,8 @@ class ThrowPlannerTest {
         ThrowPlanner.Config club = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()), "club");
         assertEquals(List.of(new ThrowPlanner.Round(60, 0.05)), club.rounds());
         assertEquals(0.9, club.goodAlignment());
+        assertEquals(0.5, ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+                .replace("\"club\":{", "\"club\":{\"goodAlignment\":0.5,")), "club").goodAlignment(), "an object's own replaces the file's");
         assertEquals(2, club.lookahead(), "the file's other settings hold for the club too");
         ThrowPlanner.Config looking = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"club\":{", "\"club\":{\"lookahead\":7,")), "club");
@@ -226,6 +245,94 @@ class ThrowPlannerTest {
                 .throwInStyles());
         assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", throwIns), "can").throwInStyles(),
                 "no throw-in styles: the throw-in is caught as the controller's own");
+        String branching = file.node().toString().replace("\"club\":{", "\"club\":{\"catchBranches\":[{\"planeShift\":0,\"velocityFraction\":0.5}],");
+        assertEquals(List.of(new CatchStyle(0, 0.5)), ThrowPlanner.Config.parse(Json.parse("planner.json", branching), "club")
+                .catchBranches());
+        assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", branching), "can").catchBranches(),
+                "no branches: each tried throw is caught one way");
+        String deep = file.node().toString().replace("\"club\":{", "\"club\":{\"lookaheadDepth\":2,");
+        assertEquals(2, ThrowPlanner.Config.parse(Json.parse("planner.json", deep), "club").lookaheadDepth());
+        assertEquals(1, ThrowPlanner.Config.parse(Json.parse("planner.json", deep), "can").lookaheadDepth(),
+                "without one a lookahead looks one throw ahead");
+        var badDeep = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+                deep.replace("\"lookaheadDepth\":2", "\"lookaheadDepth\":0")), "can"));
+        assertTrue(badDeep.getMessage().contains("objects.club.lookaheadDepth") && badDeep.getMessage().contains("0"),
+                badDeep.getMessage());
+        var badBranch = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+                branching.replace("\"velocityFraction\":0.5", "\"velocityFraction\":1.5")), "can"));
+        assertTrue(badBranch.getMessage().contains("velocityFraction") && badBranch.getMessage().contains("1.5"), badBranch.getMessage());
+    }
+
+    @Test
+    void aCatchChosenWhenThrowEndsIsTheCatchAThrowChosenWithItMakes() {
+        CatchStyle style = CLUB_BRANCH; // not the controller's own (0, 0.7)
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            ChosenThrow withStyle = new ChosenThrow();
+            CatchThrowEpisode thrownWithStyle = flipWith("club", withStyle).start(live, CLUB_BRANCH_SEED);
+            thrownWithStyle.runUntilThrowDue();
+            var e = assertThrows(IllegalStateException.class, () -> thrownWithStyle.meetComingCatchAs(style));
+            assertTrue(e.getMessage().contains("MIDDLE"), "the catch before a throw is over: " + e.getMessage());
+            withStyle.set(TestSupport.tasks().create("flip", "club").nominalThrow(), style);
+            thrownWithStyle.resume();
+            thrownWithStyle.runUntilThrowDue();
+
+            ChosenThrow plain = new ChosenThrow();
+            CatchThrowEpisode branched = flipWith("club", plain).start(twin, CLUB_BRANCH_SEED);
+            branched.runUntilThrowDue();
+            plain.set(TestSupport.tasks().create("flip", "club").nominalThrow());
+            branched.resume();
+            assertTrue(branched.runUntilThrowEnds());
+            assertEquals(Phase.GOBACK, branched.state().phase());
+            branched.meetComingCatchAs(style);
+            branched.runUntilThrowDue();
+            // records compare their doubles exactly: nothing before CATCH reads the style, so choosing it
+            // when THROW ends makes the same loop as choosing it when THROW begins
+            assertEquals(thrownWithStyle.loops(), branched.loops());
+            assertEquals(2, branched.loops().size());
+        }
+    }
+
+    @Test
+    void aFailedTrysCatchIsPlayedAgainWithABranchStyleAndTheLiveHandCatchesAsTheBranchDid() {
+        ThrowPlanner.Config one = new ThrowPlanner.Config(List.of(new ThrowPlanner.Round(1, 0.05)), shipped.goodAlignment(), 0);
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation unbranched = nominalFlip("club").planned(one, twin);
+            assertEquals(0, unbranched.successesInARow(unbranched.runWhileSuccessful(live, CLUB_BRANCH_SEED, 1)),
+                    "the nominal throw caught as the controller's own fails");
+            assertEquals(0, unbranched.plannerStats().branches());
+
+            CatchEvaluation branching = nominalFlip("club").planned(one.withCatchBranches(List.of(new CatchStyle(0, 0.4), CLUB_BRANCH)), twin);
+            List<LoopRecord> loops = branching.runWhileSuccessful(live, CLUB_BRANCH_SEED, 1);
+            assertEquals(1, branching.successesInARow(loops), "loops: " + loops);
+            ThrowPlanner.Stats s = branching.plannerStats();
+            // the single try, then its catch again at (0, 0.4) (measured: dropped) and at (0.2, 0.7), which holds
+            assertEquals(2, s.branches(), s.toString());
+            assertEquals(3, s.tries(), s.toString());
+            assertEquals(1, s.restyledCatches(), s.toString());
+            // records compare their doubles exactly: the live throw, caught as the branch was, made the twin's loop
+            assertEquals(0, s.mispredicted(), s.toString());
+        }
+    }
+
+    @Test
+    void aLookaheadTwoThrowsDeepKeepsBothThrowsAndTriesThemFirst() {
+        ThrowPlanner.Config oneDeep = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
+        ThrowPlanner.Config twoDeep = oneDeep.withLookaheadDepth(2);
+        try (Simulator live = engine(); Simulator twin = engine()) {
+            CatchEvaluation one = nominalFlip().planned(oneDeep, twin);
+            CatchEvaluation two = nominalFlip().planned(twoDeep, twin);
+            assertEquals(3, one.successesInARow(one.runWhileSuccessful(live, NOMINAL_FAILS, 3)));
+            assertEquals(3, two.successesInARow(two.runWhileSuccessful(live, NOMINAL_FAILS, 3)));
+            ThrowPlanner.Stats s = two.plannerStats();
+            // every decision after the first began with the throw found for its state, and the twin
+            // showed each chosen throw's next state leading on two throws: more tries than one deep
+            assertEquals(2, s.promised(), s.toString());
+            assertEquals(0, s.unsolved(), s.toString());
+            assertEquals(0, s.mispredicted(), s.toString());
+            assertTrue(s.tries() > one.plannerStats().tries(), s + " against one deep: " + one.plannerStats());
+            // each decision played at least its throw, the throw after it and one more from there
+            assertTrue(s.tries() >= 3 * s.decisions(), s.toString());
+        }
     }
 
     @Test
