@@ -112,6 +112,9 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "results do not depend on it")
     Integer workers;
 
+    /** A planned flip episode prints a line every this many loops in a row. */
+    private static final int PLANNED_PROGRESS_EVERY = 10;
+
     /** Throws a sensitivity run (--copies) makes per copy unless --loops says otherwise. */
     static final int SENSITIVITY_DEFAULT_LOOPS = 5;
 
@@ -453,8 +456,10 @@ final class EvaluateCommand implements Callable<Integer> {
                 .putArray("catch_styles"), r.catchStyles()));
         o.put("good_alignment", planning.goodAlignment());
         o.put("lookahead", planning.lookahead());
+        o.put("lookahead_depth", planning.lookaheadDepth());
         putStyles(o.putArray("catch_styles"), planning.catchStyles());
         putStyles(o.putArray("throw_in_styles"), planning.throwInStyles());
+        putStyles(o.putArray("catch_branches"), planning.catchBranches());
         o.put("decisions", s.decisions());
         o.put("tries", s.tries());
         o.put("unsolved", s.unsolved());
@@ -462,11 +467,13 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("promised", s.promised());
         o.put("restyled_catches", s.restyledCatches());
         o.put("restyled_throw_ins", s.restyledThrowIns());
+        o.put("branches", s.branches());
+
         System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
                 + "%d began with the throw the lookahead had found; %d live loops differed from their try in the twin; "
-                + "%d throws and %d throw-ins caught otherwise than the controller's own way%n",
+                + "%d throws and %d throw-ins caught otherwise than the controller's own way; %d catches played again from a throw's end%n",
                 s.decisions(), s.tries(), s.decisions() == 0 ? 0.0 : (double) s.tries() / s.decisions(), s.unsolved(),
-                s.promised(), s.mispredicted(), s.restyledCatches(), s.restyledThrowIns());
+                s.promised(), s.mispredicted(), s.restyledCatches(), s.restyledThrowIns(), s.branches());
     }
 
     private static void putStyles(ArrayNode out, List<CatchStyle> styles) {
@@ -538,7 +545,13 @@ final class EvaluateCommand implements Callable<Integer> {
             }
             CatchEvaluation worker = evaluation;
             return i -> {
-                List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops);
+                // planned episodes take minutes each (the club's up to an hour): say how far they are
+                CatchEvaluation.LoopListener progress = planning == null ? null : (episodeSeed, loop) -> {
+                    if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
+                        System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
+                    }
+                };
+                List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops, progress);
                 int flips = made.stream().mapToInt(t::flips).sum();
                 LoopRecord last = made.get(made.size() - 1);
                 return new FlipRun(seed + i, worker.successesInARow(made), flips, made.size() - 1, !last.caught(),

@@ -148,12 +148,20 @@ public final class CatchEvaluation {
      * failure (a dropped throw-in ends it before any throw).
      */
     public List<LoopRecord> runWhileSuccessful(Simulator sim, long seed, int maxThrows) {
+        return runWhileSuccessful(sim, seed, maxThrows, null);
+    }
+
+    /** {@link #runWhileSuccessful} telling {@code listener} (if not null) of every loop as it ends. */
+    public List<LoopRecord> runWhileSuccessful(Simulator sim, long seed, int maxThrows, LoopListener listener) {
         CatchThrowEpisode episode = start(sim, seed);
         int inARow = 0;
         while (episode.status() == CatchThrowEpisode.Status.RUNNING && inARow < maxThrows) {
             LoopRecord r = tick(episode, seed);
             if (r == null) {
                 continue;
+            }
+            if (listener != null) {
+                listener.onLoop(seed, r);
             }
             if (r.index() == 0 ? !r.caught() : !task.success(r)) {
                 break;
