@@ -468,7 +468,6 @@ final class EvaluateCommand implements Callable<Integer> {
         o.put("restyled_catches", s.restyledCatches());
         o.put("restyled_throw_ins", s.restyledThrowIns());
         o.put("branches", s.branches());
-
         System.out.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
                 + "%d began with the throw the lookahead had found; %d live loops differed from their try in the twin; "
                 + "%d throws and %d throw-ins caught otherwise than the controller's own way; %d catches played again from a throw's end%n",

@@ -515,7 +515,6 @@ public final class ThrowPlanner {
             }
             next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.runUntilThrowDue() : null;
         } catch (SimulationDiverged e) {
-            throwEnd = null;
             return Trial.failed(candidate);
         }
         return played(from.loopCount(), candidate, next);
