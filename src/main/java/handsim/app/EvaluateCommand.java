@@ -332,10 +332,10 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("peak_torque_ratio", r.peakTorqueRatio());
         }
         System.out.printf(Locale.ROOT, "%s, %s controller, %d episodes: first catch %.0f %%, loops completed %d (mean %.2f), "
-                + "drops %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
+                + "drops %d, loops out of time %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
                 + "max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f%n", object, controller, episodes,
                 100 * out.get("first_catch_rate").asDouble(), out.get("loops_completed").asInt(),
-                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), errors.count(), errors.mean(),
+                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), out.get("time_outs").asInt(), errors.count(), errors.mean(),
                 errors.absMean(), errors.absP95(), 100 * errors.within(0.1), out.get("max_limit_excess_deg").asDouble(),
                 out.get("max_penetration_mm").asDouble(), out.get("peak_torque_ratio").asDouble());
         writeCsv(rows);
@@ -376,6 +376,7 @@ final class EvaluateCommand implements Callable<Integer> {
         s.put("loops_attempted", results.stream().mapToInt(EpisodeResult::loopsAttempted).sum());
         s.put("loops_completed", results.stream().mapToInt(EpisodeResult::loopsCompleted).sum());
         s.put("drops", results.stream().mapToInt(EpisodeResult::drops).sum());
+        s.put("time_outs", results.stream().mapToInt(EpisodeResult::timeOuts).sum());
         s.put("first_catch", results.stream().allMatch(EpisodeResult::firstCatch));
         s.put("first_catches", results.stream().filter(EpisodeResult::firstCatch).count());
         s.put("first_catch_rate", results.stream().filter(EpisodeResult::firstCatch).count() / (double) n);
@@ -494,32 +495,47 @@ final class EvaluateCommand implements Callable<Integer> {
 
     // ---- flip -----------------------------------------------------------------------------
 
+    /** How a flip episode ended: its last throw dropped, caught standing, caught lying without a flip, or the cap reached. */
+    enum FlipEnd {
+        DROPPED, CAUGHT_STANDING, NO_FLIP, REACHED_MAX_LOOPS;
+
+        /** The name in the JSON and CSV. */
+        String label() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
     /**
-     * A flip episode's outcome: loops in a row that flipped and were caught properly, flips made,
-     * and how it ended: in a drop, with the object caught but not lying in the hand, or with a
-     * throw that did not flip.
+     * A flip episode's outcome: loops in a row that flipped and were caught properly, the flips
+     * those successful throws made, and how it ended.
      */
-    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, boolean tilted, List<LoopRecord> loops) {
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, FlipEnd end, List<LoopRecord> loops) {
 
-        /** How the episode ended, for its progress line; {@code maxLoops} is --loops. */
-        String ending(String object, int maxLoops) {
-            if (dropped) {
-                return "ended in a drop";
+        /** The episode of {@code made}, the loops up to and including its first failure (or the cap). */
+        static FlipRun of(long seed, List<LoopRecord> made, FlipTask task, int maxLoops) {
+            int inARow = 0, flips = 0;
+            for (LoopRecord r : made) {
+                if (r.index() > 0 && task.success(r)) {
+                    inARow++;
+                    flips += task.flips(r);
+                }
             }
-            if (tilted) {
-                return String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
+            LoopRecord last = made.get(made.size() - 1);
+            FlipEnd end = inARow >= maxLoops ? FlipEnd.REACHED_MAX_LOOPS
+                    : !last.caught() ? FlipEnd.DROPPED
+                    : last.index() > 0 && !task.properCatch(last) ? FlipEnd.CAUGHT_STANDING : FlipEnd.NO_FLIP;
+            return new FlipRun(seed, inARow, flips, made.size() - 1, end, made);
+        }
+
+        /** How the episode ended, for its progress line. */
+        String ending(String object) {
+            return switch (end) {
+                case DROPPED -> "ended in a drop";
+                case CAUGHT_STANDING -> String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
                         Math.toDegrees(loops.get(loops.size() - 1).catchTilt()));
-            }
-            return reachedLimit(maxLoops) ? "reached --loops" : "ended with a throw that did not flip";
-        }
-
-        boolean reachedLimit(int maxLoops) {
-            return inARow >= maxLoops;
-        }
-
-        /** Ended with a throw that was caught lying in the hand but did not flip. */
-        boolean unflipped(int maxLoops) {
-            return !dropped && !tilted && !reachedLimit(maxLoops);
+                case NO_FLIP -> "ended with a throw that did not flip";
+                case REACHED_MAX_LOOPS -> "reached --loops";
+            };
         }
     }
 
@@ -550,14 +566,10 @@ final class EvaluateCommand implements Callable<Integer> {
                         System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
                     }
                 };
-                List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops, progress);
-                int flips = made.stream().mapToInt(t::flips).sum();
-                LoopRecord last = made.get(made.size() - 1);
-                return new FlipRun(seed + i, worker.successesInARow(made), flips, made.size() - 1, !last.caught(),
-                        last.index() > 0 && last.caught() && !t.properCatch(last), made);
+                return FlipRun.of(seed + i, worker.runWhileSuccessful(sim, seed + i, loops, progress), t, loops);
             };
             }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                    r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
+                    r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object)));
         } finally {
             twins.forEach(Simulator::close);
         }
@@ -587,9 +599,10 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("loops_completed_max", runs.stream().mapToInt(FlipRun::inARow).max().orElse(0));
         out.put("flips", runs.stream().mapToInt(FlipRun::flips).sum());
         out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
-        out.put("drops", runs.stream().filter(FlipRun::dropped).count());
-        out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
-        out.put("unflipped_endings", runs.stream().filter(r -> r.unflipped(loops)).count());
+        ObjectNode endings = out.putObject("endings");
+        for (FlipEnd end : FlipEnd.values()) {
+            endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
+        }
         List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
         List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
@@ -608,14 +621,13 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("loops_completed", r.inARow());
             o.put("flips", r.flips());
             o.put("throws", r.throwsMade());
-            o.put("dropped", r.dropped());
-            o.put("tilted_catch", r.tilted());
+            o.put("end", r.end().label());
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
-                + "(min %d, max %d, at most %d); %d flips in %d throws; ended by %d drops, %d catches not lying in the hand, "
+                + "(min %d, max %d, at most %d); %d flips by the successful throws, %d throws; ended by %d drops, %d catches not lying in the hand, "
                 + "%d throws that did not flip%n", controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
-                out.get("drops").asInt(), out.get("tilted_catches").asInt(), out.get("unflipped_endings").asInt());
+                endings.get("dropped").asInt(), endings.get("caught_standing").asInt(), endings.get("no_flip").asInt());
         System.out.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))

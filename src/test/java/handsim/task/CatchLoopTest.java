@@ -71,6 +71,8 @@ class CatchLoopTest {
         Path golden = Home.root().resolve(GOLDEN);
         if (Boolean.getBoolean("handsim.regenerateGolden")) {
             Files.writeString(golden, "time,phase,palm_x,palm_y,palm_z,object_x,object_y,object_z\n" + String.join("\n", rows) + "\n");
+            // a file compared with what was just written to it proves nothing: the run that records reports skipped
+            org.junit.jupiter.api.Assumptions.abort("golden loop re-recorded to " + GOLDEN + ", not compared: review its diff");
         }
         List<String> expected = Files.readAllLines(golden);
         assertEquals(expected.size() - 1, rows.size(), "golden rows (regenerate with scripts/regenerate-golden)");
