@@ -1,5 +1,6 @@
 package handsim.app;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -10,9 +11,11 @@ import handsim.control.ControllerConfig;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
+import handsim.report.EpisodeJournal;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.rollout.LocalRollouts;
+import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
@@ -41,7 +44,9 @@ import java.util.concurrent.Callable;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code handsim evaluate}: seeded catch-and-throw episodes of a task with the nominal or a
@@ -133,8 +138,16 @@ final class EvaluateCommand implements Callable<Integer> {
             + "world first (handsim.task.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
     boolean plan;
 
-    @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
+    @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON, with its provenance (commit, "
+            + "command line, SHA-256 of every config, model and policy file read); while the run goes, each finished episode is "
+            + "kept in FILE.episodes.jsonl, and the same command run again after a kill runs only the episodes not yet finished")
     Path json;
+
+    @Spec
+    CommandSpec spec;
+
+    /** The finished episodes of this run and of an earlier, interrupted run of the same command (with --json), or null. */
+    private EpisodeJournal journal;
 
     @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop (height, flip) or test (box) as CSV")
     Path csv;
@@ -150,6 +163,13 @@ final class EvaluateCommand implements Callable<Integer> {
         loops = loopsOption != null ? loopsOption
                 : copies != null ? SENSITIVITY_DEFAULT_LOOPS : task.equals("flip") ? FLIP_DEFAULT_LOOPS : HEIGHT_DEFAULT_LOOPS;
         validate();
+        if (json != null) {
+            journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature());
+            if (journal.finished() > 0) {
+                System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
+                        journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
+            }
+        }
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
         Function<ThrowTask, ThrowPolicy> policies = throwPolicies();
@@ -176,11 +196,74 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
+        if (journal != null) {
+            out.put("episodes_resumed", journal.finished() - newlyFinished);
+        }
+        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs()));
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);
+            journal.delete();
         }
         return 0;
+    }
+
+    /** Episodes this run finished itself (the journal's others were read back). */
+    private int newlyFinished;
+
+    /**
+     * What makes this run's episodes what they are: the options that change a result (not
+     * --workers, --episodes or --tests: more episodes of the same run keep the first ones) and
+     * the SHA-256 of every file under configs/ and models/ and of --policy and --goals.
+     */
+    private com.fasterxml.jackson.databind.node.ObjectNode signature() throws IOException {
+        ObjectNode s = JsonNodeFactory.instance.objectNode();
+        s.put("task", task).put("controller", controller).put("plan", plan).put("object", object).put("loops", loops).put("seed", seed);
+        s.put("policy", controller.equals("learned") ? policyFile().toAbsolutePath().normalize().toString() : null);
+        s.put("throw_height", throwHeight);
+        s.put("copies", copies);
+        s.put("nudge", copies != null ? nudge : null);
+        ObjectNode files = s.putObject("files");
+        java.util.SortedMap<String, String> hashes = new java.util.TreeMap<>();
+        for (String dir : List.of("configs", "models")) {
+            try (var walk = Files.walk(Home.resolve(dir))) {
+                for (Path f : walk.filter(Files::isRegularFile).toList()) {
+                    hashes.put(Home.root().relativize(f).toString(), handsim.config.ReadLog.sha256(Files.readAllBytes(f)));
+                }
+            }
+        }
+        for (Path f : java.util.Arrays.asList(controller.equals("learned") ? policyFile() : null, goals)) {
+            if (f != null && Files.isRegularFile(f)) {
+                hashes.put(f.toAbsolutePath().normalize().toString(), handsim.config.ReadLog.sha256(Files.readAllBytes(f)));
+            }
+        }
+        hashes.forEach(files::put);
+        return s;
+    }
+
+    /**
+     * {@code task} that reads an episode back from the journal when an earlier run finished it,
+     * and otherwise runs it and journals its result at once (without --json, {@code task} itself).
+     */
+    private <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        if (journal == null) {
+            return task;
+        }
+        return sim -> {
+            RolloutTask.Rollout<R> rollout = task.prepare(sim);
+            return i -> {
+                java.util.Optional<JsonNode> earlier = journal.result(i);
+                if (earlier.isPresent()) {
+                    return read.apply(earlier.get());
+                }
+                R result = rollout.run(i);
+                journal.append(i, write.apply(result));
+                synchronized (this) {
+                    newlyFinished++;
+                }
+                return result;
+            };
+        };
     }
 
     private void validate() {
@@ -289,10 +372,10 @@ final class EvaluateCommand implements Callable<Integer> {
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
         // episode i has seed --seed + i on whichever worker runs it; printed in seed order
-        List<EpisodeResult> results = rollouts.run(episodes, sim -> {
+        List<EpisodeResult> results = rollouts.run(episodes, resumable(sim -> {
             CatchEvaluation evaluation = evaluation(tasks.height(heightGoals(heightList)), policies, cc, spec);
             return i -> evaluation.run(sim, seed + i, loops, null);
-        }, (i, r) -> {
+        }, ResultJson::episode, ResultJson::episode), (i, r) -> {
             for (LoopRecord loop : r.loops()) {
                 System.out.printf(Locale.ROOT, "episode %d loop %3d: %-7s apex %s%s  penetration %.1f mm  limit excess %.2f deg"
                         + "  torque %.2f%n", r.seed(), loop.index(), loop.caught() ? "caught" : "DROPPED",
@@ -406,11 +489,11 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
-        List<BoxTests.Test> results = rollouts.run(boxes.size(), sim -> {
+        List<BoxTests.Test> results = rollouts.run(boxes.size(), resumable(sim -> {
             BoxTask t = (BoxTask) tasks.create("box", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return i -> BoxTests.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
-        }, (i, r) -> {
+        }, ResultJson::boxTest, ResultJson::boxTest), (i, r) -> {
             System.out.printf(Locale.ROOT, "test %3d: box (%.3f, %.3f, %.3f), %.3f m from the centre: %s (%d in a row)%n",
                     r.index(), r.box().x(), r.box().y(), r.box().z(), r.distance(), r.success() ? "success" : "failure", r.inARow());
             rows.append(String.format(Locale.ROOT, "%d,%d,%.4f,%.4f,%.4f,%.4f,%s,%d%n", r.index(), r.seed(), r.box().x(),
@@ -447,10 +530,8 @@ final class EvaluateCommand implements Callable<Integer> {
         }
     }
 
-    /** The planner's settings and work over all workers, printed and in the JSON. */
-    private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, List<CatchEvaluation> planned) {
-        ThrowPlanner.Stats s = planned.stream().map(CatchEvaluation::plannerStats).reduce(ThrowPlanner.Stats.NONE,
-                ThrowPlanner.Stats::plus);
+    /** The planner's settings and its work over all episodes, printed and in the JSON. */
+    private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, ThrowPlanner.Stats s) {
         ObjectNode o = out.putObject("planner");
         ArrayNode rounds = o.putArray("rounds");
         planning.rounds().forEach(r -> putStyles(rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread())
@@ -507,12 +588,16 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /**
      * A flip episode's outcome: loops in a row that flipped and were caught properly, the flips
-     * those successful throws made, and how it ended.
+     * those successful throws made, how it ended, and the planner's work in it (with --plan).
      */
-    private record FlipRun(long seed, int inARow, int flips, int throwsMade, FlipEnd end, List<LoopRecord> loops) {
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, FlipEnd end, List<LoopRecord> loops,
+            ThrowPlanner.Stats planner) {
 
-        /** The episode of {@code made}, the loops up to and including its first failure (or the cap). */
-        static FlipRun of(long seed, List<LoopRecord> made, FlipTask task, int maxLoops) {
+        /**
+         * The episode of {@code made}, the loops up to and including its first failure (or the cap),
+         * with what the planner did in it.
+         */
+        static FlipRun of(long seed, List<LoopRecord> made, ThrowPlanner.Stats planner, FlipTask task, int maxLoops) {
             int inARow = 0, flips = 0;
             for (LoopRecord r : made) {
                 if (r.index() > 0 && task.success(r)) {
@@ -524,7 +609,7 @@ final class EvaluateCommand implements Callable<Integer> {
             FlipEnd end = inARow >= maxLoops ? FlipEnd.REACHED_MAX_LOOPS
                     : !last.caught() ? FlipEnd.DROPPED
                     : last.index() > 0 && !task.properCatch(last) ? FlipEnd.CAUGHT_STANDING : FlipEnd.NO_FLIP;
-            return new FlipRun(seed, inARow, flips, made.size() - 1, end, made);
+            return new FlipRun(seed, inARow, flips, made.size() - 1, end, made, planner);
         }
 
         /** How the episode ended, for its progress line. */
@@ -545,36 +630,42 @@ final class EvaluateCommand implements Callable<Integer> {
         Tasks tasks = Runtime.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
         ThrowPlanner.Config planning = plan ? Runtime.plannerConfig(object) : null;
-        List<CatchEvaluation> planned = Collections.synchronizedList(new ArrayList<>());
         List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
         List<FlipRun> runs;
         try {
-            runs = rollouts.run(episodes, sim -> {
-            FlipTask t = (FlipTask) tasks.create("flip", object);
-            CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
-            if (planning != null) {
-                Simulator twin = Runtime.twinSimulator(sim);
-                twins.add(twin);
-                evaluation = evaluation.planned(planning, twin);
-                planned.add(evaluation);
-            }
-            CatchEvaluation worker = evaluation;
-            return i -> {
-                // planned episodes take minutes each (the club's up to an hour): say how far they are
-                CatchEvaluation.LoopListener progress = planning == null ? null : (episodeSeed, loop) -> {
-                    if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
-                        System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
-                    }
+            runs = rollouts.run(episodes, resumable(sim -> {
+                FlipTask t = (FlipTask) tasks.create("flip", object);
+                CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+                if (planning != null) {
+                    Simulator twin = Runtime.twinSimulator(sim);
+                    twins.add(twin);
+                    evaluation = evaluation.planned(planning, twin);
+                }
+                CatchEvaluation worker = evaluation;
+                return i -> {
+                    // planned episodes take minutes each (the club's up to an hour): say how far they are
+                    CatchEvaluation.LoopListener progress = planning == null ? null : (episodeSeed, loop) -> {
+                        if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
+                            System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
+                        }
+                    };
+                    List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops, progress);
+                    return FlipRun.of(seed + i, made, worker.episodePlannerStats(), flipTask, loops);
                 };
-                return FlipRun.of(seed + i, worker.runWhileSuccessful(sim, seed + i, loops, progress), t, loops);
-            };
-            }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                    r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object)));
+            }, r -> {
+                ObjectNode o = JsonNodeFactory.instance.objectNode().put("seed", r.seed());
+                o.set("loops", ResultJson.loops(r.loops()));
+                o.set("planner", ResultJson.plannerStats(r.planner()));
+                return o;
+            }, o -> FlipRun.of(o.get("seed").asLong(), ResultJson.loops(o.get("loops")), ResultJson.plannerStats(o.get("planner")),
+                    flipTask, loops)), (i, r) -> System.out.printf(Locale.ROOT,
+                    "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n", r.seed(), r.inARow(), r.flips(),
+                    r.throwsMade(), r.ending(object)));
         } finally {
             twins.forEach(Simulator::close);
         }
         if (planning != null) {
-            putPlannerStats(out, planning, planned);
+            putPlannerStats(out, planning, runs.stream().map(FlipRun::planner).reduce(ThrowPlanner.Stats.NONE, ThrowPlanner.Stats::plus));
         }
         if (csv != null) {
             StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
@@ -732,11 +823,11 @@ final class EvaluateCommand implements Callable<Integer> {
         List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
         List<List<LoopRecord>> copiesDone = new ArrayList<>();
         ArrayNode eps = out.putArray("episodes");
-        rollouts.run(episodes * copies, sim -> {
+        rollouts.run(episodes * copies, resumable(sim -> {
             ThrowTask t = task.equals("height") ? tasks.height(heightGoals(heightList)) : tasks.create(task, object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
-        }, (j, loopsOfCopy) -> {
+        }, ResultJson::loops, ResultJson::loops), (j, loopsOfCopy) -> {
             copiesDone.add(loopsOfCopy);
             if (copiesDone.size() == copies) {
                 List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(copiesDone);

@@ -41,7 +41,9 @@ public final class Json {
     /** Parses a file; syntax errors name the file, line and column. */
     public static Json load(Path file) {
         try {
-            return of(file.toString(), MAPPER.readTree(Files.readString(file)));
+            byte[] bytes = Files.readAllBytes(file);
+            ReadLog.record(file, bytes);
+            return of(file.toString(), MAPPER.readTree(bytes));
         } catch (JsonProcessingException e) {
             throw new ConfigException(file + ": not valid JSON at line " + e.getLocation().getLineNr()
                     + ", column " + e.getLocation().getColumnNr() + ": " + e.getOriginalMessage());

@@ -1,2 +1,6 @@
-/** Results people look at: PNG charts drawn with Java2D, without a display. Depends on nothing of handsim. */
+/**
+ * Results people look at and keep: PNG charts drawn with Java2D without a display, result files
+ * written atomically, and the journal of a long evaluation's finished episodes. Imports only
+ * {@code handsim.config} (JSON).
+ */
 package handsim.report;

@@ -85,6 +85,11 @@ public final class CatchEvaluation {
         return planner == null ? earlierEpisodes : earlierEpisodes.plus(planner.stats());
     }
 
+    /** What the planner did in the running episode, or the last one (zeros without planning). */
+    public ThrowPlanner.Stats episodePlannerStats() {
+        return planner == null ? ThrowPlanner.Stats.NONE : planner.stats();
+    }
+
     /** The task whose goals the throws aim at (its episode state is shared by every episode this evaluation starts). */
     public ThrowTask task() {
         return task;
