@@ -40,7 +40,7 @@ class CommandsTest {
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
                 "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());
-        // issue 7's goal is a mean of 50 loops in a row: the height task's default of 10 throws would cut
+        // the can's goal is a mean of 50 loops in a row: the height task's default of 10 throws would cut
         // every episode short of it, so a flip episode runs to 100 loops unless --loops says otherwise
         JsonNode summary = Json.load(dir.resolve("flip.json")).node();
         assertEquals(EvaluateCommand.FLIP_DEFAULT_LOOPS, summary.get("max_loops").asInt());
@@ -122,7 +122,7 @@ class CommandsTest {
         JsonNode first = summary.get("mean_by_throw").get(0);
         assertEquals(2, first.get("copies").asInt(), text);
         // a caught sphere settles in the palm and forgets a nudge of its launch: 1.5e-8 mm apart at the
-        // first throw of seed 101 (and 1e-7 to 4e-5 mm over four throws of seeds 101-104, README), where
+        // first throw of seed 101 (and 1e-7 to 4e-5 mm over four throws of seeds 101-104, docs/results.md), where
         // a can's copies turn tens of degrees apart by the second throw
         assertTrue(first.get("apex_sd_mm").asDouble() < 1e-3, first.toString());
         assertTrue(first.get("flight_rotation_sd_deg").isNull(), "a sphere has no long axis: " + first);
