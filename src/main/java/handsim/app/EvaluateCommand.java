@@ -83,7 +83,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** Throws a height episode attempts after the first catch unless --loops says otherwise. */
     static final int HEIGHT_DEFAULT_LOOPS = 10;
-    /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of 50 (issue 7). */
+    /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of a mean of 50 (docs/results.md). */
     static final int FLIP_DEFAULT_LOOPS = 100;
 
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch (default "

@@ -118,7 +118,7 @@ class CommandsTest {
         JsonNode first = summary.get("mean_by_throw").get(0);
         assertEquals(2, first.get("copies").asInt(), text);
         // a caught sphere settles in the palm and forgets a nudge of its launch: 1.5e-8 mm apart at the
-        // first throw of seed 101 (and 1e-7 to 4e-5 mm over four throws of seeds 101-104, README), where
+        // first throw of seed 101 (and 1e-7 to 4e-5 mm over four throws of seeds 101-104, docs/results.md), where
         // a can's copies turn tens of degrees apart by the second throw
         assertTrue(first.get("apex_sd_mm").asDouble() < 1e-3, first.toString());
         assertTrue(first.get("flight_rotation_sd_deg").isNull(), "a sphere has no long axis: " + first);

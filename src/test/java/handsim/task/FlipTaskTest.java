@@ -113,7 +113,7 @@ class FlipTaskTest {
 
     @Test
     void aFlipCountsOnlyWhenTheObjectIsCaughtLyingInTheHand() {
-        // configs/tasks/flip.json: the long axis at most 45 deg out of the palm's plane (issue 7's "aligned with the palm")
+        // configs/tasks/flip.json: the long axis at most 45 deg out of the palm's plane (a flip is caught "aligned with the palm")
         assertTrue(can.success(flight(180, true, target, 0)), "lying flat in the palm");
         assertTrue(can.success(flight(180, true, target, 44)), "1 deg inside the tilt allowed");
         assertFalse(can.success(flight(180, true, target, 46)), "1 deg past it: leaning on the fingers");
