@@ -242,7 +242,7 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /**
-     * {@code task} that reads an episode back from the journal when an earlier run finished it,
+     * {@code task} that reads an episode back from the journal when an interrupted run of the same command finished it,
      * and otherwise runs it and journals its result at once (without --json, {@code task} itself).
      */
     private <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {

@@ -122,17 +122,17 @@ public final class EpisodeJournal {
         return file;
     }
 
-    /** The result journaled for episode {@code index}, if it finished in an earlier run. */
+    /** The result journaled for episode {@code index}, if an interrupted run of the same command finished it. */
     public synchronized Optional<JsonNode> result(int index) {
         return Optional.ofNullable(done.get(index));
     }
 
-    /** How many episodes finished in earlier runs. */
+    /** How many episodes interrupted runs of the same command finished. */
     public synchronized int finished() {
         return done.size();
     }
 
-    /** Lines an earlier run left unfinished (cut short by a kill) and that were dropped. */
+    /** Lines an interrupted run left unfinished (cut short by a kill) and that were dropped. */
     public int droppedLines() {
         return droppedLines;
     }
