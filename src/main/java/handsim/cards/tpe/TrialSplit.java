@@ -1,7 +1,6 @@
 package handsim.cards.tpe;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 
@@ -57,8 +56,8 @@ final class TrialSplit {
         if (n == 0) {
             return below;
         }
-        double[][] losses = losses(trials, directions);
-        int[] rank = nonDominationRanks(losses);
+        double[][] losses = Pareto.losses(trials, directions);
+        int[] rank = Pareto.ranks(losses);
         int taken = 0, r = 0;
         for (; taken < n && taken + count(rank, r) <= n; r++) {
             for (int i = 0; i < rank.length; i++) {
@@ -92,7 +91,7 @@ final class TrialSplit {
         if (n <= 1) {
             return n == 0 ? new double[0] : new double[] {1.0};
         }
-        double[][] losses = losses(below, directions);
+        double[][] losses = Pareto.losses(below, directions);
         double[] reference = referencePoint(losses);
         double total = Hypervolume.of(losses, reference);
         double[] contribution = new double[n];
@@ -113,75 +112,12 @@ final class TrialSplit {
         return contribution;
     }
 
-    /**
-     * Non-domination ranks (0 = Pareto front) of loss vectors: j dominates i when it is no worse
-     * in every loss and better in one (NSGA-II's fast non-dominated sort, Deb et al. 2002).
-     */
-    static int[] nonDominationRanks(double[][] losses) {
-        int n = losses.length;
-        int[] dominatedBy = new int[n];
-        List<List<Integer>> dominates = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            dominates.add(new ArrayList<>());
-        }
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                if (dominates(losses[j], losses[i])) {
-                    dominatedBy[i]++;
-                    dominates.get(j).add(i);
-                }
-            }
-        }
-        int[] rank = new int[n];
-        Arrays.fill(rank, -1);
-        int ranked = 0;
-        for (int r = 0; ranked < n; r++) {
-            List<Integer> front = new ArrayList<>();
-            for (int i = 0; i < n; i++) {
-                if (rank[i] == -1 && dominatedBy[i] == 0) {
-                    front.add(i);
-                }
-            }
-            for (int i : front) {
-                rank[i] = r;
-                ranked++;
-            }
-            for (int i : front) {
-                for (int k : dominates.get(i)) {
-                    dominatedBy[k]--;
-                }
-            }
-        }
-        return rank;
-    }
-
-    private static boolean dominates(double[] p, double[] q) {
-        boolean better = false;
-        for (int d = 0; d < p.length; d++) {
-            if (p[d] > q[d]) {
-                return false;
-            }
-            better |= p[d] < q[d];
-        }
-        return better;
-    }
-
     private static int count(int[] rank, int r) {
         int c = 0;
         for (int x : rank) {
             c += x == r ? 1 : 0;
         }
         return c;
-    }
-
-    private static double[][] losses(List<CompletedTrial> trials, List<Direction> directions) {
-        double[][] losses = new double[trials.size()][directions.size()];
-        for (int i = 0; i < losses.length; i++) {
-            for (int d = 0; d < directions.size(); d++) {
-                losses[i][d] = directions.get(d).loss(trials.get(i).value(d));
-            }
-        }
-        return losses;
     }
 
     /** Optuna's reference point: the worst loss per objective pushed 10 % outward; 0 becomes 1e-12. */
