@@ -31,7 +31,7 @@ final class Progress {
         double elapsed = (System.nanoTime() - t0) * 1e-9;
         int done = finishedInRange();
         double eta = (nTrials - done) * elapsed / finishedThisRun;
-        print(String.format(Locale.ROOT, "trial %d %s in %.1f s: %s | %s | %d/%d finished, %d running | elapsed %s, ETA %s",
+        print(String.format(Locale.ROOT, "trial %d %s in %.3g s: %s | %s | %d/%d finished, %d running | elapsed %s, ETA %s",
                 t.number(), t.isComplete() ? "complete" : "failed", t.seconds(), t.isComplete() ? values(t) : t.error(), best(),
                 done, nTrials, running, clock(elapsed), clock(eta)));
     }

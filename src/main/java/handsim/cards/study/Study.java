@@ -217,6 +217,7 @@ public final class Study {
         CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
         TreeSet<Integer> running = new TreeSet<>();
         try {
+            TrialRecord last = null;
             while (true) {
                 for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers; k = nextToStart(nTrials, running)) {
                     double[] params = suggest(k);
@@ -224,15 +225,17 @@ public final class Study {
                     running.add(k);
                     done.submit(() -> evaluate(objective, number, params));
                 }
+                if (last != null) {
+                    log.finished(last, running.size());
+                }
                 if (running.isEmpty()) {
                     break;
                 }
-                TrialRecord t = result(done);
-                running.remove(t.number());
-                finished.put(t.number(), t);
-                writeJson(trialFile(t.number()), t.toJson(config));
+                last = result(done);
+                running.remove(last.number());
+                finished.put(last.number(), last);
+                writeJson(trialFile(last.number()), last.toJson(config));
                 writeBest();
-                log.finished(t, running.size());
             }
         } finally {
             pool.shutdownNow();
@@ -241,7 +244,7 @@ public final class Study {
         log.end();
     }
 
-    /** The lowest trial number not finished and not running, if it may start now; else -1. */
+    /** The lowest trial number not finished and not running, if every trial it waits for has finished; else -1. */
     private int nextToStart(int nTrials, TreeSet<Integer> running) {
         int k = 0;
         while (k < nTrials && (finished.containsKey(k) || running.contains(k))) {

@@ -149,7 +149,7 @@ final class Hypervolume {
                 if (contribution[j] == -1) {
                     continue;
                 }
-                // what point j adds beyond the taken ones, once its box is cut down to the new one's
+                // what point j adds beyond the taken ones, its box cut down to the one just taken
                 double[] overlap = new double[reference.length];
                 for (int d = 0; d < overlap.length; d++) {
                     overlap[d] = Math.max(points[best][d], points[j][d]);
