@@ -78,9 +78,6 @@ class StudyTest {
         assertEquals(min, best.values()[0], 0.0, "best is the smallest value");
         assertEquals(best.number(), Json.load(tmp.resolve(Study.BEST_FILE)).get("best").integer("number"));
         assertEquals(best.params()[0] * best.params()[0], best.info().get("x2"), 0.0, "the objective's info is kept");
-        // trials 0-10 are random (trial 10 sees trials 0-8 only); TPE gets the regret of
-        // Branin below 2.0 by trial 30 (random search's median at 30 trials is 1.1, TPE's 0.55)
-        assertTrue(min < 2.0, "best regret " + min);
         // study.json: config, seed, sampler, this run's provenance
         Json studyJson = Json.load(tmp.resolve(Study.STUDY_FILE));
         assertEquals(SEED, studyJson.longValue("seed"));
