@@ -20,10 +20,10 @@ import java.util.Set;
  * JSON:
  * <pre>
  * {
- *   "objectives": [{"name": "angleError", "direction": "minimize"}],
- *   "params": [{"name": "t0", "low": 0.0, "high": 0.5},
- *              {"name": "vp", "low": 0.001, "high": 0.1, "log": true},
- *              {"name": "fingers", "low": 2, "high": 3, "int": true}],
+ *   "objectives": [{"name": "regret", "direction": "minimize"}],
+ *   "params": [{"name": "x", "low": -5.0, "high": 10.0},
+ *              {"name": "rate", "low": 0.001, "high": 0.1, "log": true},
+ *              {"name": "k", "low": 1, "high": 4, "int": true}],
  *   "parallelTrials": 2,
  *   "sampler": {"nStartupTrials": 10}
  * }

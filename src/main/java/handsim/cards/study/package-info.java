@@ -8,9 +8,9 @@
  *
  * <p>A command runs one in a few lines:
  * <pre>
- * StudyConfig config = StudyConfig.load(Path.of("configs/cards/snap-study.json"));
+ * StudyConfig config = StudyConfig.load(configFile);
  * Study study = Study.openOrCreate(outDir, config, seed, provenance);   // resumes if outDir has one
- * study.run(trial -&gt; snap.evaluate(trial), 89, workers, System.out);
+ * study.run(trial -&gt; sleight.evaluate(trial), 89, workers, System.out);
  * TrialRecord best = study.best().orElseThrow();                        // best.json, history.png written
  * </pre>
  *
