@@ -57,6 +57,12 @@ public final class TpeSampler {
 
     /** Parameter values (search-space order, own units) for the next trial, from the finished trials. */
     public double[] suggest(List<CompletedTrial> history, SplittableRandom rng) {
+        for (CompletedTrial t : history) {
+            if (t.params().length != space.size() || t.values().length != directions.size()) {
+                throw new IllegalArgumentException("trial " + t.number() + ": " + t.params().length + " params and " + t.values().length
+                        + " values, the sampler has " + space.size() + " params and " + directions.size() + " objectives");
+            }
+        }
         double[] out = new double[space.size()];
         if (history.size() < settings.nStartupTrials()) {
             for (int i = 0; i < out.length; i++) {
