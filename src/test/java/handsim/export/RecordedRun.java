@@ -1,0 +1,50 @@
+package handsim.export;
+
+import handsim.TestSupport;
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.control.ControllerConfig;
+import handsim.sim.Simulator;
+import handsim.sim.ode.OdeSimulator;
+import handsim.task.CatchEvaluation;
+import handsim.task.CatchLoopScene;
+import handsim.task.EpisodeLimits;
+import handsim.task.HeightControl;
+import handsim.task.HeightGoals;
+import handsim.task.LaunchDistribution;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A catch-and-throw loop of the height task with the nominal controller, recorded as the export
+ * records it, and beside each sample the simulator's own reading of the joint angles
+ * ({@link Simulator#readJoints}) at that instant: what the tests hold an export against.
+ */
+final class RecordedRun {
+
+    final MotionClip clip;
+    /** Per sample, the simulator's joint angles (rad, model DOF order). */
+    final List<double[]> jointAngles = new ArrayList<>();
+
+    RecordedRun(String object, long seed, double seconds, double rate) {
+        ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
+                TestSupport.heightTask(HeightGoals.fixed(1.2)));
+        Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig());
+        MotionRecorder recorder = new MotionRecorder(rate);
+        int samples = recorder.samplesOver(seconds);
+        try (CatchLoopScene scene = new CatchLoopScene(sim, evaluation, seed, new HeightControl(0.05, 0.8, 1.7))) {
+            while (recorder.sampleCount() < samples) {
+                scene.advance(recorder.untilNext());
+                if (recorder.due(scene.time())) {
+                    recorder.record(scene.snapshot(), scene.goal());
+                    double[] q = new double[sim.model().dofCount()];
+                    sim.readJoints(q, new double[q.length]);
+                    jointAngles.add(q);
+                }
+            }
+        }
+        clip = recorder.clip("test: height task, " + object + ", nominal controller, seed " + seed);
+    }
+}
