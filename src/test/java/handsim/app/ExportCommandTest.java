@@ -82,4 +82,24 @@ class ExportCommandTest {
         }
         assertEquals(List.of("plain.txt"), files(dir), "nothing written");
     }
+
+    @Test
+    void demoAndEvaluateWriteTheirRunsAnimation(@TempDir Path dir) throws Exception {
+        Result demo = run("demo", "--headless", "--loops", "1", "--seed", "1", "--out", dir.resolve("demo").toString(), "--export",
+                dir.resolve("demo.glb").toString());
+        assertEquals(0, demo.code(), demo.err());
+        assertTrue(demo.out().contains("demo.glb") && demo.out().contains("samples at 60 Hz"), demo.out());
+        assertEquals("glTF", new String(Files.readAllBytes(dir.resolve("demo.glb")), 0, 4, StandardCharsets.US_ASCII));
+        Result evaluate = run("evaluate", "--task", "height", "--episodes", "1", "--loops", "1", "--workers", "1", "--export",
+                dir.resolve("episode.bvh").toString());
+        assertEquals(0, evaluate.code(), evaluate.err());
+        String bvh = Files.readString(dir.resolve("episode.bvh"));
+        // a frame every 1/60 s from the first tick to the episode's end
+        int frames = Integer.parseInt(bvh.lines().filter(l -> l.startsWith("Frames:")).findFirst().orElseThrow().substring(7).strip());
+        assertTrue(frames > 60, "over a second of frames: " + frames);
+        Result many = run("evaluate", "--episodes", "2", "--export", dir.resolve("two.glb").toString());
+        assertEquals(2, many.code());
+        assertTrue(many.err().contains("--export goes with one episode"), many.err());
+        assertFalse(Files.exists(dir.resolve("two.glb")));
+    }
 }
