@@ -26,9 +26,4 @@ public record ExportOptions(boolean floor, boolean goal, Optional<CameraView> ca
      */
     public record CameraView(Vec3 eye, Vec3 target, double fovY, double near, double far) {
     }
-
-    /** These options with the floor, the goal and the camera as given. */
-    public ExportOptions with(boolean withFloor, boolean withGoal, Optional<CameraView> withCamera) {
-        return new ExportOptions(withFloor, withGoal, withCamera, colours, floorHalfSize, floorTile, goalPlaneHalfSize);
-    }
 }

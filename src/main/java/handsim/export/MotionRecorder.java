@@ -7,11 +7,16 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Samples a run's snapshots {@code rate} times a simulated second into a {@link MotionClip}. It
- * is offered snapshots as often as its owner has them (every controller tick of a headless run,
- * every frame the viewer draws) and keeps the first at or after each sample time. Its clock is
- * the simulated time, carried on across resets of the world (a new episode starts the
- * simulator's clock at 0; the recording's goes on), so sample times always increase.
+ * Samples a run's snapshots {@code rate} times a simulated second into a {@link MotionClip}, at
+ * times as near the grid {@code k / rate} as the snapshots offered allow. Its clock is the
+ * simulated time, carried on across resets of the world (a new episode starts the simulator's
+ * clock at 0; the recording's goes on), so sample times always increase. Two ways in:
+ * <ul>
+ * <li>{@link #due} then {@link #record}, for an owner that makes a snapshot only when one is due
+ * (a headless run's ticks): the first at or after each sample time is kept;
+ * <li>{@link #offer}, for an owner that has every snapshot anyway (the viewer's frames, which
+ * come at their own pace): of the snapshots around each sample time, the nearer is kept.
+ * </ul>
  */
 public final class MotionRecorder {
 
@@ -27,6 +32,12 @@ public final class MotionRecorder {
     private double base;
     private double lastSimTime = Double.NaN;
     private double start = Double.NaN;
+    /** The index k of the next sample time, start + k / rate. */
+    private long slot;
+    /** The last snapshot offered before the next sample time, with its goal and clock reading, or null. */
+    private WorldSnapshot before;
+    private Goal beforeGoal;
+    private double beforeElapsed;
 
     /** A recorder of {@code rate} samples per simulated second. */
     public MotionRecorder(double rate) {
@@ -59,21 +70,45 @@ public final class MotionRecorder {
         return Double.isNaN(start) || elapsed() >= nextTime() - TIME_EPSILON;
     }
 
-    /** Keeps {@code snapshot} if a sample is due at its time; {@code goal} is the task's goal then. */
-    public void offer(WorldSnapshot snapshot, Goal goal) {
-        if (due(snapshot.time())) {
-            record(snapshot, goal);
-        }
+    /** Keeps {@code snapshot} (its time given to {@link #due} just before) as the next sample; {@code goal} is the task's goal then. */
+    public void record(WorldSnapshot snapshot, Goal goal) {
+        keep(snapshot, goal, elapsed());
     }
 
-    /** Keeps {@code snapshot} (its time given to {@link #due} just before) as the next sample. */
-    public void record(WorldSnapshot snapshot, Goal goal) {
+    /**
+     * Offers {@code snapshot} (with the task's goal then): when it reaches the next sample time,
+     * the nearer of it and the snapshot offered just before is kept.
+     */
+    public void offer(WorldSnapshot snapshot, Goal goal) {
+        if (!due(snapshot.time())) {
+            before = snapshot;
+            beforeGoal = goal;
+            beforeElapsed = elapsed();
+            return;
+        }
+        double next = Double.isNaN(start) ? elapsed() : nextTime();
+        if (before != null && next - beforeElapsed < elapsed() - next && beforeElapsed > lastSampleTime() + TIME_EPSILON) {
+            keep(before, beforeGoal, beforeElapsed);
+            before = null;
+            if (!due(snapshot.time())) {
+                before = snapshot;
+                beforeGoal = goal;
+                beforeElapsed = elapsed();
+                return;
+            }
+        }
+        before = null;
+        record(snapshot, goal);
+    }
+
+    private void keep(WorldSnapshot snapshot, Goal goal, double at) {
         if (Double.isNaN(start)) {
-            start = elapsed();
+            start = at;
             model = snapshot.model();
             groundHeight = snapshot.groundHeight();
         }
-        samples.add(MotionClip.Sample.of(elapsed() - start, snapshot, goal));
+        samples.add(MotionClip.Sample.of(at - start, snapshot, goal));
+        slot = Math.max(slot + 1, (long) Math.floor((at - start) * rate + TIME_EPSILON) + 1);
     }
 
     /** Simulated seconds from now until the next sample is due (0 before the first). */
@@ -98,10 +133,13 @@ public final class MotionRecorder {
         return base + lastSimTime;
     }
 
-    /** When the next sample is due: the first grid time k / rate after the last sample's. */
+    /** The recording's clock at the last sample. */
+    private double lastSampleTime() {
+        return start + samples.get(samples.size() - 1).time();
+    }
+
+    /** When the next sample is due: the grid time after the last sample's slot (and after the last sample). */
     private double nextTime() {
-        double last = samples.get(samples.size() - 1).time();
-        long k = (long) Math.floor(last * rate + TIME_EPSILON) + 1;
-        return start + k * period;
+        return start + slot * period;
     }
 }
