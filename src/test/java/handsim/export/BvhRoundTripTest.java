@@ -44,7 +44,7 @@ class BvhRoundTripTest {
 
     @BeforeAll
     static void record() throws Exception {
-        run = new RecordedRun("can", 3, 2.0, 60);
+        run = new RecordedRun("can", 3, 2.0, 60, 1.2);
         Path file = dir.resolve("run.bvh");
         ExportTarget.of(file, "bvh", "--out", "--format").write(run.clip, null);
         bvh = BvhReader.read(file);

@@ -99,6 +99,11 @@ final class GltfReader {
         return channels.getOrDefault(node, Map.of()).containsKey(path);
     }
 
+    /** The output accessor of a node's channel. */
+    int output(int node, String path) {
+        return channels.get(node).get(path);
+    }
+
     /** The keyframe times of a node's channel. */
     float[] times(int node, String path) {
         return floats(inputs.get(node).get(path));

@@ -11,7 +11,9 @@ import handsim.viewer.Camera;
 import handsim.viewer.ExportLook;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Optional;
+import handsim.model.Shape;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -36,8 +38,9 @@ class GltfRoundTripTest {
 
     @BeforeAll
     static void record() {
-        // the can: cylinder caps, and an object that turns in flight; 2 s holds the throw-in's catch and the throw
-        run = new RecordedRun("can", 3, 2.0, 60);
+        // the can: cylinder caps, and an object that turns in flight; 2 s hold the throw-in's catch; a new
+        // throw at 1.2 s resets the world (the recording's clock goes on) with a can of another size
+        run = new RecordedRun("can", 3, 2.0, 60, 1.2);
     }
 
     @Test
@@ -68,6 +71,27 @@ class GltfRoundTripTest {
             assertTrue(gltf.json.get("nodes").get(n).has("mesh"), b.name() + " has the mesh of its shapes");
         }
         assertEquals(-1, gltf.parent(gltf.node("can")), "the object is a node of its own");
+    }
+
+    @Test
+    void eachSizeOfTheObjectIsShownWhileItIsInTheWorld() throws Exception {
+        GltfReader gltf = GltfReader.read(write("sizes.glb"));
+        List<List<Shape>> sizes = run.clip.samples().stream().map(s -> s.objectSpec().shapes()).distinct().toList();
+        assertEquals(2, sizes.size(), "the new throw's can has another size");
+        for (int k = 0; k < sizes.size(); k++) {
+            int child = gltf.node("can " + (k + 1));
+            assertEquals(gltf.node("can"), gltf.parent(child));
+            float[] scale = gltf.floats(gltf.output(child, "scale"));
+            for (int i = 0; i < run.clip.samples().size(); i++) {
+                boolean shown = run.clip.samples().get(i).objectSpec().shapes().equals(sizes.get(k));
+                assertEquals(shown ? 1f : 0f, scale[3 * i], "size " + (k + 1) + " at sample " + i);
+            }
+        }
+        // the sample times go on over the reset, one sample every 1/60 s
+        float[] times = gltf.times(gltf.node("can"), "translation");
+        for (int i = 1; i < times.length; i++) {
+            assertEquals(1 / 60.0, times[i] - times[i - 1], 0.0021, "samples within a 2 ms tick of the 60 Hz grid");
+        }
     }
 
     private static Path write(String name) throws Exception {

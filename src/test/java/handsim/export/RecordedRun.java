@@ -12,6 +12,7 @@ import handsim.task.EpisodeLimits;
 import handsim.task.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
+import handsim.task.SceneCommand;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -27,6 +28,14 @@ final class RecordedRun {
     final List<double[]> jointAngles = new ArrayList<>();
 
     RecordedRun(String object, long seed, double seconds, double rate) {
+        this(object, seed, seconds, rate, Double.NaN);
+    }
+
+    /**
+     * As above, with a new throw (the next seed's episode: the world reset, an object of another
+     * size) at {@code newThrowAt} seconds into the recording (NaN: none).
+     */
+    RecordedRun(String object, long seed, double seconds, double rate, double newThrowAt) {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
@@ -35,7 +44,12 @@ final class RecordedRun {
         MotionRecorder recorder = new MotionRecorder(rate);
         int samples = recorder.samplesOver(seconds);
         try (CatchLoopScene scene = new CatchLoopScene(sim, evaluation, seed, new HeightControl(0.05, 0.8, 1.7))) {
+            boolean thrown = Double.isNaN(newThrowAt);
             while (recorder.sampleCount() < samples) {
+                if (!thrown && recorder.sampleCount() >= newThrowAt * rate) {
+                    scene.apply(SceneCommand.NEW_THROW);
+                    thrown = true;
+                }
                 scene.advance(recorder.untilNext());
                 if (recorder.due(scene.time())) {
                     recorder.record(scene.snapshot(), scene.goal());
