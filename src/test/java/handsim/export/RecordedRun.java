@@ -1,17 +1,9 @@
 package handsim.export;
 
 import handsim.TestSupport;
-import handsim.config.Home;
-import handsim.config.Json;
-import handsim.control.ControllerConfig;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchEvaluation;
 import handsim.task.CatchLoopScene;
-import handsim.task.EpisodeLimits;
-import handsim.task.HeightControl;
-import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
 import handsim.task.SceneCommand;
 import java.util.ArrayList;
 import java.util.List;
@@ -36,14 +28,10 @@ final class RecordedRun {
      * size) at {@code newThrowAt} seconds into the recording (NaN: none).
      */
     RecordedRun(String object, long seed, double seconds, double rate, double newThrowAt) {
-        ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                TestSupport.heightTask(HeightGoals.fixed(1.2)));
         Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig());
         MotionRecorder recorder = new MotionRecorder(rate);
         int samples = recorder.samplesOver(seconds);
-        try (CatchLoopScene scene = new CatchLoopScene(sim, evaluation, seed, new HeightControl(0.05, 0.8, 1.7))) {
+        try (CatchLoopScene scene = TestSupport.heightLoopScene(sim, object, seed)) {
             boolean thrown = Double.isNaN(newThrowAt);
             while (recorder.sampleCount() < samples) {
                 if (!thrown && recorder.sampleCount() >= newThrowAt * rate) {

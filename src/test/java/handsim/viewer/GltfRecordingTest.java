@@ -6,18 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import handsim.TestSupport;
-import handsim.config.Home;
-import handsim.config.Json;
-import handsim.control.ControllerConfig;
 import handsim.live.LiveRun;
 import handsim.live.SimClock;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchEvaluation;
 import handsim.task.CatchLoopScene;
-import handsim.task.EpisodeLimits;
-import handsim.task.HeightControl;
-import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
@@ -42,12 +34,7 @@ class GltfRecordingTest {
     @Test
     void gStartsAndStopsAGlbOfTheFramesDrawn(@TempDir Path dir) throws Exception {
         ViewerConfig config = TestSupport.viewerConfig();
-        ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"),
-                TestSupport.heightTask(HeightGoals.fixed(1.2)));
-        CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()), evaluation, 1,
-                new HeightControl(0.05, 0.8, 1.7));
+        CatchLoopScene scene = TestSupport.heightLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()), "sphere", 1);
         ViewerConfig.Pacing p = config.pacing();
         List<String> notes = new ArrayList<>();
         try (LiveRun run = new LiveRun(scene, new SimClock(p.maxLagSeconds()), p.minChunkSeconds(), p.maxChunkSeconds(), notes::add);
