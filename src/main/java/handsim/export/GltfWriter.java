@@ -210,13 +210,15 @@ final class GltfWriter {
         boolean alwaysThere = samples.stream().allMatch(s -> s.objectSpec() != null);
         if (sizes.size() == 1 && alwaysThere) {
             ((ObjectNode) nodes.get(n)).put("mesh", mesh(name, ShapeMeshes.of(sizes.get(0), Detail.FINE), material));
+            return n;
         }
-        for (int k = 0; k < sizes.size() && !(sizes.size() == 1 && alwaysThere); k++) {
+        for (int k = 0; k < sizes.size(); k++) {
             List<Shape> shapes = sizes.get(k);
-            int child = node(name + " " + (k + 1));
-            ((ObjectNode) nodes.get(child)).put("mesh", mesh(name + " " + (k + 1), ShapeMeshes.of(shapes, Detail.FINE), material));
+            String sizeName = name + " " + (k + 1);
+            int child = node(sizeName);
+            ((ObjectNode) nodes.get(child)).put("mesh", mesh(sizeName, ShapeMeshes.of(shapes, Detail.FINE), material));
             addChild(n, child);
-            visibility(child, s -> s.objectSpec() != null && s.objectSpec().shapes().equals(shapes) ? new Vec3(1, 1, 1) : Vec3.ZERO);
+            stepChannel(child, "scale", s -> s.objectSpec() != null && s.objectSpec().shapes().equals(shapes) ? new Vec3(1, 1, 1) : Vec3.ZERO);
         }
         return n;
     }
@@ -237,7 +239,7 @@ final class GltfWriter {
             node.put("mesh", mesh("box", ShapeMeshes.box(Vec3.ZERO, new Vec3(1, 1, 1)),
                     material("static box", options.colours().staticBox(), false)));
             if (!clip.samples().stream().allMatch(s -> s.boxes().contains(box))) {
-                visibility(n, s -> s.boxes().contains(box) ? box.size() : Vec3.ZERO);
+                stepChannel(n, "scale", s -> s.boxes().contains(box) ? box.size() : Vec3.ZERO);
             }
             out.add(n);
         }
@@ -335,11 +337,7 @@ final class GltfWriter {
         channel(n, "rotation", "LINEAR", accessor(view(floats(rotation), null), FLOAT, samples.size(), "VEC4", null, null));
     }
 
-    /** A step-interpolated scale of node {@code n}: 0 hides it. */
-    private void visibility(int n, Function<MotionClip.Sample, Vec3> scale) {
-        stepChannel(n, "scale", scale);
-    }
-
+    /** A step-interpolated channel of node {@code n} (a scale of 0 hides it). */
     private void stepChannel(int n, String path, Function<MotionClip.Sample, Vec3> value) {
         List<MotionClip.Sample> samples = clip.samples();
         float[] v = new float[3 * samples.size()];
