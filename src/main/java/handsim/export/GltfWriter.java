@@ -177,22 +177,22 @@ final class GltfWriter {
     // ---- the object -----------------------------------------------------------------------
 
     /**
-     * The object's node, named after it, moved as its centre of mass and turned as it is. Each
-     * size the object had (a seed varies it) is a mesh: on the node itself if there is one,
-     * else on a child per size shown only while that size is in the world.
+     * The object's node, named after it ("object" if the run had several kinds), moved as its
+     * centre of mass and turned as it is. Each object the run had (a seed varies its size; the
+     * viewer may switch objects) is a mesh: on the node itself if there is one, else on a child
+     * per object ("can 1", "can 2", ...) shown only while that one is in the world.
      */
     private int object() {
         List<MotionClip.Sample> samples = clip.samples();
         List<List<Shape>> sizes = new ArrayList<>();
-        String name = "object";
+        List<String> names = new ArrayList<>();
         for (MotionClip.Sample s : samples) {
-            if (s.objectSpec() != null) {
-                name = s.objectSpec().name();
-                if (!sizes.contains(s.objectSpec().shapes())) {
-                    sizes.add(s.objectSpec().shapes());
-                }
+            if (s.objectSpec() != null && !sizes.contains(s.objectSpec().shapes())) {
+                sizes.add(s.objectSpec().shapes());
+                names.add(s.objectSpec().name());
             }
         }
+        String name = names.stream().distinct().count() == 1 ? names.get(0) : "object";
         int n = node(name);
         int material = material("object", options.colours().object(), false);
         // while no object is in the world the node holds the nearest pose it had
@@ -214,7 +214,7 @@ final class GltfWriter {
         }
         for (int k = 0; k < sizes.size(); k++) {
             List<Shape> shapes = sizes.get(k);
-            String sizeName = name + " " + (k + 1);
+            String sizeName = names.get(k) + " " + (k + 1);
             int child = node(sizeName);
             ((ObjectNode) nodes.get(child)).put("mesh", mesh(sizeName, ShapeMeshes.of(shapes, Detail.FINE), material));
             addChild(n, child);
