@@ -14,17 +14,16 @@ import java.util.Optional;
 
 /**
  * {@code --export FILE} of a headless run ({@code demo --headless}, {@code evaluate --episodes 1}):
- * the file is checked before the run, the run's ticks are sampled at {@link #RATE} Hz as they
- * pass, and the animation (glTF or BVH by the file's extension, with the floor and the viewer's
- * home camera) is written when the run is over.
+ * the file is checked before the run, the run's ticks are sampled as they pass at the viewer's
+ * glTF rate ({@code configs/viewer.json} recording.gltfRate), and the animation (glTF or BVH by
+ * the file's extension, with the floor and the viewer's home camera) is written when the run is
+ * over.
  */
 final class RunExport implements CatchEvaluation.TickWatcher {
 
-    /** Samples per simulated second, as {@code export}'s default. */
-    static final double RATE = 60;
-
     private final ExportTarget target;
-    private final MotionRecorder recorder = new MotionRecorder(RATE);
+    private final ViewerConfig config = ViewerSession.config();
+    private final MotionRecorder recorder = new MotionRecorder(config.recording().gltfRate());
 
     private RunExport(ExportTarget target) {
         this.target = target;
@@ -44,8 +43,7 @@ final class RunExport implements CatchEvaluation.TickWatcher {
 
     /** Writes what was recorded as the animation {@code title}, and says so. */
     void write(String title) throws IOException {
-        ViewerConfig config = ViewerSession.config();
         target.write(recorder.clip(title), ExportLook.options(config, true, false, Optional.of(new Camera(config.camera()))));
-        System.out.printf("wrote %s (%d samples at %.0f Hz)%n", target.file(), recorder.sampleCount(), RATE);
+        System.out.printf("wrote %s (%d samples at %s Hz)%n", target.file(), recorder.sampleCount(), recorder.rate());
     }
 }

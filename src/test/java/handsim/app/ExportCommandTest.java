@@ -88,7 +88,7 @@ class ExportCommandTest {
         Result demo = run("demo", "--headless", "--loops", "1", "--seed", "1", "--out", dir.resolve("demo").toString(), "--export",
                 dir.resolve("demo.glb").toString());
         assertEquals(0, demo.code(), demo.err());
-        assertTrue(demo.out().contains("demo.glb") && demo.out().contains("samples at 60 Hz"), demo.out());
+        assertTrue(demo.out().contains("demo.glb") && demo.out().contains("samples at 60.0 Hz"), demo.out());
         assertEquals("glTF", new String(Files.readAllBytes(dir.resolve("demo.glb")), 0, 4, StandardCharsets.US_ASCII));
         Result evaluate = run("evaluate", "--task", "height", "--episodes", "1", "--loops", "1", "--workers", "1", "--export",
                 dir.resolve("episode.bvh").toString());
