@@ -52,6 +52,10 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--headless", description = "run headless even when a display is available")
     boolean headless;
 
+    @Option(names = "--export", paramLabel = "FILE", description = "headless: also write the run's animation (FILE.glb, "
+            + "FILE.gltf or FILE.bvh; see export)")
+    Path export;
+
     /** The controller the headless run uses. */
     private String controllerShown = "nominal";
 
@@ -71,6 +75,10 @@ final class DemoCommand implements Callable<Integer> {
         }
         HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
         String controller = bestController(object);
+        if (export != null && !headless && ViewerSession.hasDisplay()) {
+            throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
+        }
+        RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
             return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, false, 0, null);
         }
@@ -96,6 +104,9 @@ final class DemoCommand implements Callable<Integer> {
                 CatchThrowEpisode episode = evaluation.start(sim, s);
                 while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
                     LoopRecord r = episode.tick();
+                    if (exported != null) {
+                        exported.afterTick(sim);
+                    }
                     if (r == null) {
                         continue;
                     }
@@ -113,6 +124,9 @@ final class DemoCommand implements Callable<Integer> {
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
+        if (exported != null) {
+            exported.write("handsim demo: height task, " + object + ", " + controller + " controller, seed " + seed);
+        }
         return 0;
     }
 

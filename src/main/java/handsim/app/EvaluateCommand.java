@@ -158,6 +158,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "with .png)")
     Path plot;
 
+    @Option(names = "--export", paramLabel = "FILE",
+            description = "with --episodes 1 (box: --tests 1): also write the episode's animation (FILE.glb, FILE.gltf or FILE.bvh; see export)")
+    Path export;
+
+    /** The episode's animation export, or null. */
+    private RunExport exported;
+
     @Override
     public Integer call() throws Exception {
         loops = loopsOption != null ? loopsOption
@@ -196,6 +203,9 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
+        if (exported != null) {
+            exported.write("handsim evaluate: " + task + " task, " + object + ", " + controllerLabel() + " controller, seed " + seed);
+        }
         if (journal != null) {
             out.put("episodes_resumed", journal.finished() - newlyFinished);
         }
@@ -313,6 +323,10 @@ final class EvaluateCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
+        if (export != null && (episodes != 1 || copies != null || task.equals("box") && tests != 1)) {
+            throw new IllegalArgumentException("--export goes with one episode: --episodes 1 (box: --tests 1), without --copies");
+        }
+        exported = RunExport.to(export);
         if (plot == null && json != null) {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
@@ -349,7 +363,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */
     private CatchEvaluation evaluation(ThrowTask t, Function<ThrowTask, ThrowPolicy> policies, ControllerConfig cc,
             ObjectSpec spec) {
-        return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t));
+        return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t)).watchedBy(exported);
     }
 
     /** The heights of --goals, or null. */
