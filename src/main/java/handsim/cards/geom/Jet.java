@@ -78,6 +78,18 @@ public final class Jet {
         return this;
     }
 
+    /** this = α a + β b + γ (this may be a or b). */
+    public Jet linear(double alpha, Jet a, double beta, Jet b, double gamma) {
+        v = alpha * a.v + beta * b.v + gamma;
+        for (int i = 0; i < n; i++) {
+            g[i] = alpha * a.g[i] + beta * b.g[i];
+        }
+        for (int k = 0; k < h.length; k++) {
+            h[k] = alpha * a.h[k] + beta * b.h[k];
+        }
+        return this;
+    }
+
     /** this = a b (this must not be a or b). */
     public Jet mul(Jet a, Jet b) {
         double av = a.v;
