@@ -165,6 +165,11 @@ public final class SparseSpdSystem {
      * and, for a ≠ b, implicitly its transpose at (b, a). The pair must be in the pattern.
      */
     public void addBlock(int a, int b, double[] h, int offset, int stride) {
+        addBlock(a, b, h, offset, stride, 1.0);
+    }
+
+    /** {@link #addBlock(int, int, double[], int, int)} with the block times {@code scale}. */
+    public void addBlock(int a, int b, double[] h, int offset, int stride, double scale) {
         int pa = perm[a];
         int pb = perm[b];
         if (pa == pb) {
@@ -172,7 +177,7 @@ public final class SparseSpdSystem {
             for (int c = 0; c < 3; c++) {
                 int at = pointers[3 * pa + c] + 3 * m;
                 for (int r = 0; r <= c; r++) {
-                    values[at + r] += h[offset + r * stride + c];
+                    values[at + r] += scale * h[offset + r * stride + c];
                 }
             }
             return;
@@ -188,7 +193,7 @@ public final class SparseSpdSystem {
             int at = pointers[3 * col + c] + 3 * slot;
             for (int r = 0; r < 3; r++) {
                 // entry (row node, component r; column node, component c)
-                values[at + r] += transpose ? h[offset + c * stride + r] : h[offset + r * stride + c];
+                values[at + r] += scale * (transpose ? h[offset + c * stride + r] : h[offset + r * stride + c]);
             }
         }
     }
