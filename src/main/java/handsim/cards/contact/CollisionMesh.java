@@ -16,6 +16,8 @@ public final class CollisionMesh {
     final double[] halfThickness;
     final boolean[] selfContact;
     final double[] rest;
+    final boolean[] isCard;
+    final FrictionTable friction;
     final boolean hasGround;
     final double groundHeight;
 
@@ -27,10 +29,13 @@ public final class CollisionMesh {
      * @param halfThickness per body (m)
      * @param selfContact   per body
      * @param rest          rest positions of all nodes (for the edge–edge mollifier threshold)
+     * @param isCard        per body: a card (else a fingertip)
+     * @param friction      friction coefficients by pair kind
      * @param groundHeight  height of the static ground plane (m), or NaN for none
      */
     public CollisionMesh(int[] vertices, int[] edges, int[] faces, int[] bodyOfNode, double[] halfThickness,
-                         boolean[] selfContact, double[] rest, double groundHeight) {
+                         boolean[] selfContact, double[] rest, boolean[] isCard, FrictionTable friction,
+                         double groundHeight) {
         if (bodyOfNode.length >= 1 << 15) {
             throw new IllegalArgumentException("contact keys hold node indices below 32768, got " + bodyOfNode.length + " nodes");
         }
@@ -41,6 +46,8 @@ public final class CollisionMesh {
         this.halfThickness = halfThickness.clone();
         this.selfContact = selfContact.clone();
         this.rest = rest.clone();
+        this.isCard = isCard.clone();
+        this.friction = friction;
         this.hasGround = !Double.isNaN(groundHeight);
         this.groundHeight = groundHeight;
     }
@@ -55,6 +62,22 @@ public final class CollisionMesh {
 
     public int faceCount() {
         return faces.length / 3;
+    }
+
+    /** Friction coefficients by pair kind: card–card, anything touching skin, a card on the ground. */
+    public record FrictionTable(double cardCard, double skin, double ground) {
+    }
+
+    /** μ between the bodies of two nodes. */
+    double frictionBetween(int nodeA, int nodeB) {
+        boolean a = isCard[bodyOfNode[nodeA]];
+        boolean b = isCard[bodyOfNode[nodeB]];
+        return a && b ? friction.cardCard() : friction.skin();
+    }
+
+    /** μ between a node's body and the ground. */
+    double groundFriction(int node) {
+        return isCard[bodyOfNode[node]] ? friction.ground() : friction.skin();
     }
 
     double offset(int nodeA, int nodeB) {

@@ -58,13 +58,19 @@ public final class ContactSet {
     private double[] edgeBoxes = new double[0];
     private final double[] buf = new double[12];
     private final double[] buf2 = new double[12];
-    private final double[] gradD = new double[12];
-    private final double[] hessD = new double[144];
-    private final double[] gradM = new double[12];
-    private final double[] hessM = new double[144];
-    private final double[] local = new double[144];
-    private final int[] localNodes = new int[4];
-    private final SymmetricEigen eigen = new SymmetricEigen(12);
+    private final Scratch scratch = new Scratch();
+
+    /** Scratch memory of one thread evaluating barrier terms. */
+    public static final class Scratch {
+        final double[] pos = new double[12];
+        final double[] gradD = new double[12];
+        final double[] hessD = new double[144];
+        final double[] gradM = new double[12];
+        final double[] hessM = new double[144];
+        final double[] local = new double[144];
+        final int[] localNodes = new int[4];
+        final SymmetricEigen eigen = new SymmetricEigen(12);
+    }
 
     /**
      * @param mesh     what can touch
@@ -434,11 +440,13 @@ public final class ContactSet {
         return nodes[4 * c + i];
     }
 
-    /**
-     * Squared distance of contact c at x, with derivatives in its stencil when the arrays are
-     * given; the positions are left in {@code buf}.
-     */
+    /** Squared distance of contact c at x, with derivatives in its stencil when the arrays are given. */
     double distance2(int c, double[] x, double[] grad, double[] hess) {
+        return distance2(c, x, grad, hess, scratch.pos);
+    }
+
+    /** As {@link #distance2(int, double[], double[], double[])}, the stencil's positions left in {@code buf}. */
+    private double distance2(int c, double[] x, double[] grad, double[] hess, double[] buf) {
         int k = NODES_OF_KIND[kind[c]];
         for (int i = 0; i < k; i++) {
             int n = 3 * nodes[4 * c + i];
@@ -470,8 +478,8 @@ public final class ContactSet {
         }
     }
 
-    /** Mollifier of contact c (positions already in buf), with derivatives; 1 unless mollified. */
-    private double mollifier(int c, double[] grad, double[] hess) {
+    /** Mollifier of contact c (its positions in buf), with derivatives; 1 unless mollified. */
+    private double mollifier(int c, double[] buf, double[] grad, double[] hess) {
         if (kind[c] != EE || mollified[c] == null) {
             return 1;
         }
@@ -480,25 +488,37 @@ public final class ContactSet {
 
     /** κ Σ m b(s): the barrier energy at x (the set built at x); +∞ if any pair touches. */
     public double energy(double[] x, double kappa) {
+        return energy(x, kappa, 0, count, scratch);
+    }
+
+    /** The barrier energy of contacts [from, to). */
+    public double energy(double[] x, double kappa, int from, int to, Scratch w) {
         double e = 0;
-        for (int c = 0; c < count; c++) {
-            double s = distance2(c, x, null, null) - xi[c] * xi[c];
+        for (int c = from; c < to; c++) {
+            double s = distance2(c, x, null, null, w.pos) - xi[c] * xi[c];
             if (s <= 0) {
                 return Double.POSITIVE_INFINITY;
             }
-            e += mollifier(c, null, null) * Barrier.value(s, activation(xi[c]));
+            e += mollifier(c, w.pos, null, null) * Barrier.value(s, activation(xi[c]));
         }
         return kappa * e;
     }
 
     /** Adds the barrier gradient to g (all nodes). */
     public void addGradient(double[] x, double kappa, double[] g) {
-        for (int c = 0; c < count; c++) {
+        addGradient(x, kappa, 0, count, g, scratch);
+    }
+
+    /** Adds the barrier gradient of contacts [from, to) to g. */
+    public void addGradient(double[] x, double kappa, int from, int to, double[] g, Scratch w) {
+        double[] gradD = w.gradD;
+        double[] gradM = w.gradM;
+        for (int c = from; c < to; c++) {
             int k = NODES_OF_KIND[kind[c]];
-            double s = distance2(c, x, gradD, null) - xi[c] * xi[c];
+            double s = distance2(c, x, gradD, null, w.pos) - xi[c] * xi[c];
             double sh = activation(xi[c]);
             boolean molly = kind[c] == EE && mollified[c] != null;
-            double m = mollifier(c, gradM, null);
+            double m = mollifier(c, w.pos, gradM, null);
             double b1 = Barrier.slope(s, sh);
             double b = molly ? Barrier.value(s, sh) : 0;
             for (int i = 0; i < k; i++) {
@@ -513,16 +533,27 @@ public final class ContactSet {
 
     /** Sends the (projected) barrier Hessian of each contact to the sink. */
     public void addHessian(double[] x, double kappa, HessianSink sink, boolean project) {
-        for (int c = 0; c < count; c++) {
+        addHessian(x, kappa, 0, count, sink, project, scratch);
+    }
+
+    /** Sends the (projected) barrier Hessians of contacts [from, to) to the sink. */
+    public void addHessian(double[] x, double kappa, int from, int to, HessianSink sink, boolean project, Scratch w) {
+        double[] gradD = w.gradD;
+        double[] hessD = w.hessD;
+        double[] gradM = w.gradM;
+        double[] hessM = w.hessM;
+        double[] local = w.local;
+        int[] localNodes = w.localNodes;
+        for (int c = from; c < to; c++) {
             int k = NODES_OF_KIND[kind[c]];
             int n = 3 * k;
-            double s = distance2(c, x, gradD, hessD) - xi[c] * xi[c];
+            double s = distance2(c, x, gradD, hessD, w.pos) - xi[c] * xi[c];
             double sh = activation(xi[c]);
             double b = Barrier.value(s, sh);
             double b1 = Barrier.slope(s, sh);
             double b2 = Barrier.curvature(s, sh);
             boolean molly = kind[c] == EE && mollified[c] != null;
-            double m = molly ? EdgeEdgeMollifier.evaluate(buf, epsX[c], gradM, hessM) : 1;
+            double m = molly ? EdgeEdgeMollifier.evaluate(w.pos, epsX[c], gradM, hessM) : 1;
             for (int i = 0; i < n; i++) {
                 for (int j = 0; j < n; j++) {
                     double h = m * (b2 * gradD[i] * gradD[j] + b1 * hessD[i * n + j]);
@@ -533,7 +564,7 @@ public final class ContactSet {
                 }
             }
             if (project) {
-                eigen.projectToPsd(local, n);
+                w.eigen.projectToPsd(local, n);
             }
             for (int i = 0; i < k; i++) {
                 localNodes[i] = nodes[4 * c + i];

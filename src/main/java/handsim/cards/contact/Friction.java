@@ -10,10 +10,10 @@ import handsim.cards.geom.Distances.Kernel;
  * weights β and a tangent basis P. Over the step, the tangential slip u = Pᵀ Σ βᵢ (xᵢ − xᵢᵗ) costs
  * the dissipative potential μ λ f0(|u|; εv h), entering the incremental potential times h².
  * Its Hessian μλ h² Tᵀ[f1/y I + (f1' − f1/y) ûûᵀ]T is positive semi-definite as it stands.
+ * μ depends on the pair: card on card, skin on anything, card on the ground.
  */
 public final class Friction {
 
-    private final double mu;
     private final double epsV;
 
     private int count;
@@ -22,6 +22,7 @@ public final class Friction {
     private double[] beta = new double[4 * 64];
     private double[] basis = new double[6 * 64];
     private double[] lambda = new double[64];
+    private double[] mu = new double[64];
     private double[] start;
     private double h;
 
@@ -29,12 +30,8 @@ public final class Friction {
     private final int[] localNodes = new int[4];
     private final double[] pos = new double[12];
 
-    /**
-     * @param mu   friction coefficient
-     * @param epsV slip speed below which friction is smoothed towards static (m/s)
-     */
-    public Friction(double mu, double epsV) {
-        this.mu = mu;
+    /** @param epsV slip speed below which friction is smoothed towards static (m/s) */
+    public Friction(double epsV) {
         this.epsV = epsV;
     }
 
@@ -47,16 +44,16 @@ public final class Friction {
         this.h = timeStep;
         this.start = xt.clone();
         count = 0;
-        if (mu == 0) {
-            return;
-        }
         double[] gradD = new double[12];
         for (int c = 0; c < set.count; c++) {
             int k = set.nodeCount(c);
             double d2 = set.distance2(c, xt, gradD, null);
             double s = d2 - set.xi[c] * set.xi[c];
             double force = kappa / (h * h) * Math.abs(Barrier.slope(s, set.activation(set.xi[c]))) * 2 * Math.sqrt(d2);
-            if (!(force > 0)) {
+            double coefficient = set.kind[c] == ContactSet.GROUND
+                    ? set.mesh().groundFriction(set.node(c, 0))
+                    : set.mesh().frictionBetween(set.node(c, 0), set.node(c, k - 1));
+            if (!(force > 0) || coefficient == 0) {
                 continue;
             }
             grow();
@@ -80,6 +77,7 @@ public final class Friction {
             }
             tangentBasis(n, basis, 6 * count);
             lambda[count] = force;
+            mu[count] = coefficient;
             count++;
         }
     }
@@ -92,6 +90,7 @@ public final class Friction {
             beta = java.util.Arrays.copyOf(beta, 4 * cap);
             basis = java.util.Arrays.copyOf(basis, 6 * cap);
             lambda = java.util.Arrays.copyOf(lambda, cap);
+            mu = java.util.Arrays.copyOf(mu, cap);
         }
     }
 
@@ -224,7 +223,7 @@ public final class Friction {
         double eps = epsV * h;
         for (int c = 0; c < count; c++) {
             slip(c, x, u);
-            e += mu * lambda[c] * FrictionMollifier.f0(Math.hypot(u[0], u[1]), eps);
+            e += mu[c] * lambda[c] * FrictionMollifier.f0(Math.hypot(u[0], u[1]), eps);
         }
         return h * h * e;
     }
@@ -235,7 +234,7 @@ public final class Friction {
         for (int c = 0; c < count; c++) {
             slip(c, x, u);
             double y = Math.hypot(u[0], u[1]);
-            double s = h * h * mu * lambda[c] * FrictionMollifier.f1OverY(y, eps);
+            double s = h * h * mu[c] * lambda[c] * FrictionMollifier.f1OverY(y, eps);
             int o = 6 * c;
             for (int i = 0; i < nodeCount[c]; i++) {
                 int n = 3 * nodes[4 * c + i];
@@ -255,7 +254,7 @@ public final class Friction {
             double y = Math.hypot(u[0], u[1]);
             double f1y = FrictionMollifier.f1OverY(y, eps);
             double f2 = FrictionMollifier.f2(y, eps);
-            double scale = h * h * mu * lambda[c];
+            double scale = h * h * mu[c] * lambda[c];
             // inner 2x2: f1/y I + (f1' − f1/y) û ûᵀ
             double m00 = f1y;
             double m01 = 0;

@@ -66,10 +66,28 @@ public final class Bending implements Energy {
         return 0.5 * Math.sqrt(cx * cx + cy * cy + cz * cz);
     }
 
+    /** Shares the hinge data of {@code other}, with its own scratch memory. */
+    private Bending(Bending other) {
+        this.hinges = other.hinges;
+        this.count = other.count;
+        this.restAngle = other.restAngle;
+        this.weight = other.weight;
+    }
+
     @Override
-    public double value(double[] x) {
+    public int elementCount() {
+        return count;
+    }
+
+    @Override
+    public Energy workspaceCopy() {
+        return new Bending(this);
+    }
+
+    @Override
+    public double value(double[] x, int from, int to) {
         double e = 0;
-        for (int h = 0; h < count; h++) {
+        for (int h = from; h < to; h++) {
             gather(x, h);
             double d = DihedralAngle.angle(pos) - restAngle[h];
             e += weight[h] * d * d;
@@ -78,25 +96,36 @@ public final class Bending implements Energy {
     }
 
     @Override
-    public void addGradient(double[] x, double[] g) {
-        for (int h = 0; h < count; h++) {
+    public void addGradient(double[] x, int from, int to, double[] g) {
+        for (int h = from; h < to; h++) {
             gather(x, h);
-            Jet theta = angle.evaluate(pos);
-            double s = 2 * weight[h] * (theta.v - restAngle[h]);
-            for (int k = 0; k < 4; k++) {
-                int n = 3 * hinges[4 * h + k];
-                for (int c = 0; c < 3; c++) {
-                    g[n + c] += s * theta.g[3 * k + c];
-                }
+            addHingeGradient(angle.evaluate(pos), h, g);
+        }
+    }
+
+    private void addHingeGradient(Jet theta, int h, double[] g) {
+        double s = 2 * weight[h] * (theta.v - restAngle[h]);
+        for (int k = 0; k < 4; k++) {
+            int n = 3 * hinges[4 * h + k];
+            for (int c = 0; c < 3; c++) {
+                g[n + c] += s * theta.g[3 * k + c];
             }
         }
     }
 
     @Override
-    public void addHessian(double[] x, HessianSink sink, boolean project) {
-        for (int h = 0; h < count; h++) {
+    public void addHessian(double[] x, int from, int to, HessianSink sink, boolean project) {
+        addGradientAndHessian(x, from, to, null, sink, project);
+    }
+
+    @Override
+    public void addGradientAndHessian(double[] x, int from, int to, double[] g, HessianSink sink, boolean project) {
+        for (int h = from; h < to; h++) {
             gather(x, h);
             Jet theta = angle.evaluate(pos);
+            if (g != null) {
+                addHingeGradient(theta, h, g);
+            }
             double w2 = 2 * weight[h];
             double d = theta.v - restAngle[h];
             theta.hessianInto(local, w2 * d);
@@ -115,7 +144,4 @@ public final class Bending implements Energy {
         }
     }
 
-    public int count() {
-        return count;
-    }
 }

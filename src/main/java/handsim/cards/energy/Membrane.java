@@ -72,6 +72,15 @@ public final class Membrane implements Energy {
         }
     }
 
+    /** Shares the element data of {@code other}, with its own scratch memory. */
+    private Membrane(Membrane other) {
+        this.tris = other.tris;
+        this.count = other.count;
+        this.restInv = other.restInv;
+        this.cTrace = other.cTrace;
+        this.cSquare = other.cSquare;
+    }
+
     private static Jet[] jets(int k, int n) {
         Jet[] out = new Jet[k];
         for (int i = 0; i < k; i++) {
@@ -142,31 +151,53 @@ public final class Membrane implements Energy {
     }
 
     @Override
-    public double value(double[] x) {
+    public int elementCount() {
+        return count;
+    }
+
+    @Override
+    public Energy workspaceCopy() {
+        return new Membrane(this);
+    }
+
+    @Override
+    public double value(double[] x, int from, int to) {
         double e = 0;
-        for (int t = 0; t < count; t++) {
+        for (int t = from; t < to; t++) {
             e += elementValue(x, t);
         }
         return e;
     }
 
     @Override
-    public void addGradient(double[] x, double[] g) {
-        for (int t = 0; t < count; t++) {
-            Jet e = element(x, t);
-            for (int k = 0; k < 3; k++) {
-                int n = 3 * tris[3 * t + k];
-                for (int c = 0; c < 3; c++) {
-                    g[n + c] += e.g[3 * k + c];
-                }
+    public void addGradient(double[] x, int from, int to, double[] g) {
+        for (int t = from; t < to; t++) {
+            addElementGradient(element(x, t), t, g);
+        }
+    }
+
+    private void addElementGradient(Jet e, int t, double[] g) {
+        for (int k = 0; k < 3; k++) {
+            int n = 3 * tris[3 * t + k];
+            for (int c = 0; c < 3; c++) {
+                g[n + c] += e.g[3 * k + c];
             }
         }
     }
 
     @Override
-    public void addHessian(double[] x, HessianSink sink, boolean project) {
-        for (int t = 0; t < count; t++) {
-            element(x, t).hessianInto(local, 1);
+    public void addHessian(double[] x, int from, int to, HessianSink sink, boolean project) {
+        addGradientAndHessian(x, from, to, null, sink, project);
+    }
+
+    @Override
+    public void addGradientAndHessian(double[] x, int from, int to, double[] g, HessianSink sink, boolean project) {
+        for (int t = from; t < to; t++) {
+            Jet e = element(x, t);
+            if (g != null) {
+                addElementGradient(e, t, g);
+            }
+            e.hessianInto(local, 1);
             if (project) {
                 eigen.projectToPsd(local, 9);
             }

@@ -23,6 +23,7 @@ public final class TetElasticity implements Energy {
 
     // workspace (one instance per thread)
     private final double[] f = new double[9];
+    private final double[] sig = new double[3];
     private final Svd3 svd = new Svd3();
     private final double[] local = new double[144];
     private final int[] nodes = new int[4];
@@ -68,8 +69,14 @@ public final class TetElasticity implements Energy {
         this.volume = other.volume;
     }
 
-    public int count() {
+    @Override
+    public int elementCount() {
         return count;
+    }
+
+    @Override
+    public Energy workspaceCopy() {
+        return new TetElasticity(this);
     }
 
     /** Rest volume of tetrahedron t (m³). */
@@ -99,21 +106,21 @@ public final class TetElasticity implements Energy {
     }
 
     @Override
-    public double value(double[] x) {
+    public double value(double[] x, int from, int to) {
         double e = 0;
-        for (int t = 0; t < count; t++) {
+        for (int t = from; t < to; t++) {
             e += elementValue(x, t);
         }
         return e;
     }
 
-    /** Energy of one tetrahedron. */
+    /** Energy of one tetrahedron (singular values in closed form, no vectors needed). */
     public double elementValue(double[] x, int t) {
         deformation(x, t);
-        svd.decompose(f);
-        double s0 = svd.sigma[0];
-        double s1 = svd.sigma[1];
-        double s2 = svd.sigma[2];
+        Svd3.singularValues(f, sig);
+        double s0 = sig[0];
+        double s1 = sig[1];
+        double s2 = sig[2];
         double j = s0 * s1 * s2;
         double psi = mu[t] * ((s0 - 1) * (s0 - 1) + (s1 - 1) * (s1 - 1) + (s2 - 1) * (s2 - 1))
                 + 0.5 * lambda[t] * (j - 1) * (j - 1);
@@ -121,10 +128,17 @@ public final class TetElasticity implements Energy {
     }
 
     @Override
-    public void addGradient(double[] x, double[] g) {
-        for (int t = 0; t < count; t++) {
+    public void addGradient(double[] x, int from, int to, double[] g) {
+        for (int t = from; t < to; t++) {
             deformation(x, t);
             svd.decompose(f);
+            addElementGradient(t, g);
+        }
+    }
+
+    /** Adds V̄ P : ∂F/∂x of tetrahedron t (its SVD already in {@code svd}). */
+    private void addElementGradient(int t, double[] g) {
+        {
             double[] s = svd.sigma;
             double j = s[0] * s[1] * s[2];
             double m = mu[t];
@@ -164,20 +178,40 @@ public final class TetElasticity implements Energy {
     }
 
     @Override
-    public void addHessian(double[] x, HessianSink sink, boolean project) {
-        for (int t = 0; t < count; t++) {
+    public void addHessian(double[] x, int from, int to, HessianSink sink, boolean project) {
+        for (int t = from; t < to; t++) {
             elementHessian(x, t, project);
-            for (int k = 0; k < 4; k++) {
-                nodes[k] = tets[4 * t + k];
-            }
-            sink.add(nodes, 4, local);
+            send(t, sink);
         }
+    }
+
+    @Override
+    public void addGradientAndHessian(double[] x, int from, int to, double[] g, HessianSink sink, boolean project) {
+        for (int t = from; t < to; t++) {
+            deformation(x, t);
+            svd.decompose(f);
+            addElementGradient(t, g);
+            modes(t, project);
+            send(t, sink);
+        }
+    }
+
+    private void send(int t, HessianSink sink) {
+        for (int k = 0; k < 4; k++) {
+            nodes[k] = tets[4 * t + k];
+        }
+        sink.add(nodes, 4, local);
     }
 
     /** The 12x12 Hessian of tetrahedron t into the workspace {@code local}. */
     private void elementHessian(double[] x, int t, boolean project) {
         deformation(x, t);
         svd.decompose(f);
+        modes(t, project);
+    }
+
+    /** The Hessian from the SVD in {@code svd} by its nine eigen-modes. */
+    private void modes(int t, boolean project) {
         double[] s = svd.sigma;
         double m = mu[t];
         double l = lambda[t];

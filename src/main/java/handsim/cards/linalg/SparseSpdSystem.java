@@ -170,6 +170,10 @@ public final class SparseSpdSystem {
 
     /** {@link #addBlock(int, int, double[], int, int)} with the block times {@code scale}. */
     public void addBlock(int a, int b, double[] h, int offset, int stride, double scale) {
+        addBlock(values, a, b, h, offset, stride, scale);
+    }
+
+    private void addBlock(double[] values, int a, int b, double[] h, int offset, int stride, double scale) {
         int pa = perm[a];
         int pb = perm[b];
         if (pa == pb) {
@@ -200,6 +204,10 @@ public final class SparseSpdSystem {
 
     /** Adds {@code d} to the three diagonal entries of node a. */
     public void addDiagonal(int a, double d) {
+        addDiagonal(values, a, d);
+    }
+
+    private void addDiagonal(double[] values, int a, double d) {
         int pa = perm[a];
         int m = lower[pa].length;
         for (int c = 0; c < 3; c++) {
@@ -207,25 +215,89 @@ public final class SparseSpdSystem {
         }
     }
 
-    /** Factors the current values; false if the matrix is not positive definite. */
+    /**
+     * Factors the current values (which it scales in place); false if the matrix is not positive
+     * definite. The matrix is first scaled symmetrically to a unit diagonal, D^{-1/2} H D^{-1/2}:
+     * contact barriers make some diagonal entries many orders of magnitude above the masses, and
+     * LDLᵀ's pivot test is relative to the largest pivot.
+     */
     public boolean factor() {
+        if (scaling == null || scaling.length != dofs) {
+            scaling = new double[dofs];
+        }
+        for (int j = 0; j < dofs; j++) {
+            double d = values[pointers[j + 1] - 1];
+            if (!(d > 0)) {
+                return false;
+            }
+            scaling[j] = 1 / Math.sqrt(d);
+        }
+        for (int j = 0; j < dofs; j++) {
+            double sj = scaling[j];
+            for (int at = pointers[j]; at < pointers[j + 1]; at++) {
+                values[at] *= scaling[indices[at]] * sj;
+            }
+        }
         return ldl.factor(matrix, tree) && ldl.isSolvable();
     }
+
+    private double[] scaling;
 
     /** Solves H x = b for the last factorisation; {@code b} (system order) is overwritten by x. */
     public void solve(double[] b, double[] work) {
         for (int i = 0; i < nodes; i++) {
             int pi = perm[i];
-            work[3 * pi] = b[3 * i];
-            work[3 * pi + 1] = b[3 * i + 1];
-            work[3 * pi + 2] = b[3 * i + 2];
+            for (int c = 0; c < 3; c++) {
+                work[3 * pi + c] = b[3 * i + c] * scaling[3 * pi + c];
+            }
         }
         ldl.ftran(work);
         for (int i = 0; i < nodes; i++) {
             int pi = perm[i];
-            b[3 * i] = work[3 * pi];
-            b[3 * i + 1] = work[3 * pi + 1];
-            b[3 * i + 2] = work[3 * pi + 2];
+            for (int c = 0; c < 3; c++) {
+                b[3 * i + c] = work[3 * pi + c] * scaling[3 * pi + c];
+            }
+        }
+    }
+
+    /**
+     * A private buffer with the system's pattern that one assembly thread fills; {@link
+     * #sum(Accumulator...)} adds the buffers in a fixed order, so the result does not depend on
+     * how the threads were scheduled.
+     */
+    public final class Accumulator {
+        private double[] buffer = new double[0];
+
+        /** Zeroes the buffer (resized to the current pattern). */
+        public void clear() {
+            if (buffer.length != values.length) {
+                buffer = new double[values.length];
+            } else {
+                Arrays.fill(buffer, 0.0);
+            }
+        }
+
+        public void addBlock(int a, int b, double[] h, int offset, int stride, double scale) {
+            SparseSpdSystem.this.addBlock(buffer, a, b, h, offset, stride, scale);
+        }
+
+        public void addDiagonal(int a, double d) {
+            SparseSpdSystem.this.addDiagonal(buffer, a, d);
+        }
+    }
+
+    public Accumulator accumulator() {
+        return new Accumulator();
+    }
+
+    /** Sets the values to the sum of the accumulators, added in the order given. */
+    public void sum(Accumulator... parts) {
+        System.arraycopy(parts[0].buffer, 0, values, 0, values.length);
+        for (int k = 1; k < parts.length; k++) {
+            double[] b = parts[k].buffer;
+            for (int i = 0; i < values.length; i++) {
+                values[i] += b[i];
+            }
         }
     }
 

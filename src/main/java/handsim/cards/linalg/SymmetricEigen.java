@@ -48,13 +48,13 @@ public final class SymmetricEigen {
                     off += a[p * n + q] * a[p * n + q];
                 }
             }
-            if (off <= 1e-30 * scale * scale || off < tiny) {
+            if (off <= 1e-26 * scale * scale || off < tiny) {
                 break;
             }
             for (int p = 0; p < n; p++) {
                 for (int q = p + 1; q < n; q++) {
                     double apq = a[p * n + q];
-                    if (Math.abs(apq) < tiny) {
+                    if (Math.abs(apq) < tiny || Math.abs(apq) < 1e-14 * scale) {
                         continue;
                     }
                     double app = a[p * n + p];

@@ -8,7 +8,7 @@ import java.util.Arrays;
 /**
  * Everything that changes while a card scene runs: time, step count, node positions and
  * velocities (3 per node, SI units), and the adaptive barrier stiffness with the last smallest
- * squared gap that drives it. Bone targets and lagged friction are functions of this state, so a
+ * gap that drives it. Bone targets and lagged friction are functions of this state, so a
  * copy resumes a run bit for bit; {@link #write}/{@link #read} store it exactly.
  */
 public final class SimState {

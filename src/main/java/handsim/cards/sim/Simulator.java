@@ -3,7 +3,6 @@ package handsim.cards.sim;
 import handsim.cards.contact.Barrier;
 import handsim.cards.contact.ContactSet;
 import handsim.cards.contact.Friction;
-import handsim.cards.energy.HessianSink;
 import handsim.cards.linalg.SparseSpdSystem;
 import java.util.Arrays;
 
@@ -16,8 +15,8 @@ import java.util.Arrays;
  * Newton stops when the largest node update over h falls below the tolerance (m/s).
  *
  * <p>κ starts at IPC's mass-scaled minimum (or the gradient balance if contacts exist) and
- * doubles, up to 100 times that minimum, while the smallest squared gap keeps shrinking below
- * ε_d (the IPC Toolkit's adaptive stiffness). Friction is lagged at the start of each step.
+ * doubles, up to 100 times that minimum, while the smallest gap keeps shrinking below ε_d (the
+ * IPC Toolkit's adaptive stiffness). Friction is lagged at the start of each step.
  */
 public final class Simulator {
 
@@ -39,8 +38,8 @@ public final class Simulator {
     private final double[] work;
     private final double[] translation = new double[3];
     private final StepStats total = new StepStats();
-    private final SystemSink sink = new SystemSink();
     private long[] pattern = new long[0];
+    private java.util.function.DoubleUnaryOperator gravityScale = t -> 1;
     private long[] couplingKeys = new long[64];
     private int couplingCount;
 
@@ -49,8 +48,8 @@ public final class Simulator {
         this.settings = settings;
         this.bones = bones;
         this.contacts = new ContactSet(world.collision, settings.dhat(), settings.hashCell());
-        this.friction = new Friction(settings.friction(), settings.frictionEpsV());
-        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep());
+        this.friction = new Friction(settings.frictionEpsV());
+        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallelAssembly());
         this.system = new SparseSpdSystem(world.freeCount);
         this.n = 3 * world.nodeCount();
         xt = new double[n];
@@ -60,6 +59,15 @@ public final class Simulator {
         rhs = new double[3 * world.freeCount];
         step = new double[n];
         work = new double[3 * world.freeCount];
+    }
+
+    /**
+     * Scales gravity by a function of time (a warm-up can ramp it on while bones take hold);
+     * gravity is full by default.
+     */
+    public Simulator withGravityScale(java.util.function.DoubleUnaryOperator scale) {
+        this.gravityScale = scale;
+        return this;
     }
 
     /** Totals over every step this simulator took. */
@@ -84,7 +92,9 @@ public final class Simulator {
         long t0 = System.nanoTime();
         contacts.build(xt);
         st.contactNanos += System.nanoTime() - t0;
-        potential.prepare(xt, state.v, settings.gravity(), state.kappa);
+        double[] g = settings.gravity();
+        double gs = gravityScale.applyAsDouble(state.time + h);
+        potential.prepare(xt, state.v, new double[] {gs * g[0], gs * g[1], gs * g[2]}, state.kappa);
         if (state.kappa == 0) {
             initialiseStiffness(state);
             potential.setKappa(state.kappa);
@@ -198,8 +208,8 @@ public final class Simulator {
 
     /** −∇E into rhs (free nodes) and the projected Hessian into the system. */
     private void assemble() {
-        Arrays.fill(grad, 0);
-        potential.addGradient(x, grad);
+        updatePattern();
+        potential.assemble(x, grad, system, true);
         for (int i = 0; i < n / 3; i++) {
             int f = world.freeIndex[i];
             if (f >= 0) {
@@ -208,9 +218,6 @@ public final class Simulator {
                 }
             }
         }
-        updatePattern();
-        system.clear();
-        potential.addHessian(x, sink, true);
     }
 
     /** Elastic couplings plus those of the current contacts and lagged friction. */
@@ -270,7 +277,7 @@ public final class Simulator {
             contacts.addGradient(xt, 1.0, gb);
             double[] ge = new double[n];
             potential.setKappa(0);
-            potential.addGradient(xt, ge);
+            potential.gradient(xt, ge);
             double num = 0;
             double den = 0;
             for (int i = 0; i < n / 3; i++) {
@@ -288,44 +295,14 @@ public final class Simulator {
         state.kappa = kappa;
     }
 
-    /** Doubles κ while the smallest squared gap keeps shrinking below ε_d. */
+    /** Doubles κ while the smallest gap d − ξ keeps shrinking below ε_d = 1e-9 (bbox diagonal + ξ). */
     private void updateStiffness(SimState state) {
         double eps = 1e-9 * (world.bboxDiagonal + world.collision.maxOffsetForStiffness());
-        eps *= eps;
-        double min = contacts.minSquaredGap(x);
+        double min = contacts.minGap(x);
         if (state.previousMinGap2 < eps && min < eps && min < state.previousMinGap2) {
             state.kappa = Math.min(state.kappaMax, 2 * state.kappa);
             potential.setKappa(state.kappa);
         }
         state.previousMinGap2 = min;
-    }
-
-    /** Routes element Hessians of all nodes to the system's free nodes, times a scale. */
-    private final class SystemSink implements IncrementalPotential.ScaledSink {
-        private double scale = 1;
-
-        @Override
-        public HessianSink withScale(double s) {
-            scale = s;
-            return this;
-        }
-
-        @Override
-        public void add(int[] nodes, int k, double[] h) {
-            int stride = 3 * k;
-            for (int a = 0; a < k; a++) {
-                int fa = world.freeIndex[nodes[a]];
-                if (fa < 0) {
-                    continue;
-                }
-                for (int b = a; b < k; b++) {
-                    int fb = world.freeIndex[nodes[b]];
-                    if (fb < 0) {
-                        continue;
-                    }
-                    system.addBlock(fa, fb, h, 3 * a * stride + 3 * b, stride, scale);
-                }
-            }
-        }
     }
 }

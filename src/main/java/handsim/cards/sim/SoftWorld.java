@@ -91,7 +91,7 @@ public final class SoftWorld {
                 b.contactFaces.stream().mapToInt(Integer::intValue).toArray(),
                 b.bodyOfNode.stream().mapToInt(Integer::intValue).toArray(),
                 b.halfThickness.stream().mapToDouble(Double::doubleValue).toArray(),
-                toBooleans(b.selfContact), rest, b.groundHeight);
+                toBooleans(b.selfContact), rest, toBooleans(b.isCard), b.friction, b.groundHeight);
         List<handsim.cards.energy.Energy> terms = new ArrayList<>();
         for (handsim.cards.energy.Energy term : new handsim.cards.energy.Energy[] {tets, membrane, bending}) {
             if (term != null) {
@@ -232,7 +232,15 @@ public final class SoftWorld {
         private final List<Integer> bodyOfNode = new ArrayList<>();
         private final List<Double> halfThickness = new ArrayList<>();
         private final List<Boolean> selfContact = new ArrayList<>();
+        private final List<Boolean> isCard = new ArrayList<>();
         private double groundHeight = Double.NaN;
+        private CollisionMesh.FrictionTable friction = new CollisionMesh.FrictionTable(0, 0, 0);
+
+        /** Friction coefficients of the scene's contacts. */
+        public Builder friction(CollisionMesh.FrictionTable table) {
+            this.friction = table;
+            return this;
+        }
 
         private int addNodes(double[] v, Placement at) {
             int first = nodes.size() / 3;
@@ -274,6 +282,7 @@ public final class SoftWorld {
             }
             halfThickness.add(material.thickness() / 2);
             selfContact.add(true);
+            isCard.add(true);
             bodies.add(new Body(name, Body.Kind.CARD, first, mesh.vertexCount(), surface));
             return this;
         }
@@ -320,6 +329,7 @@ public final class SoftWorld {
             }
             halfThickness.add(0.0);
             selfContact.add(false);
+            isCard.add(false);
             bodies.add(new Body(name, Body.Kind.FINGERTIP, first, mesh.vertexCount(), surface));
             return this;
         }

@@ -8,15 +8,16 @@ package handsim.cards.sim;
  * @param newtonTolerance    Newton stops when the largest node update over h is below this (m/s)
  * @param maxNewtonIterations cap on Newton iterations per step
  * @param ccdRescaling       additive CCD's conservative rescaling η
- * @param friction           friction coefficient μ of every contact
+ * @param friction           friction coefficients: card–card, skin on anything, card on the ground
  * @param frictionEpsV       slip speed below which friction is smoothed (m/s)
  * @param kappaScale         IPC's minimum-stiffness scale (1e11 in the IPC Toolkit)
  * @param gravity            gravity (m/s²)
  * @param hashCell           spatial hash cell size (m)
+ * @param parallelAssembly   assemble on two threads (the result is bit-identical either way)
  */
 public record SolverSettings(double timeStep, double dhat, double newtonTolerance, int maxNewtonIterations,
-                             double ccdRescaling, double friction, double frictionEpsV, double kappaScale,
-                             double[] gravity, double hashCell) {
+                             double ccdRescaling, handsim.cards.contact.CollisionMesh.FrictionTable friction, double frictionEpsV, double kappaScale,
+                             double[] gravity, double hashCell, boolean parallelAssembly) {
 
     public SolverSettings {
         gravity = gravity.clone();
