@@ -19,6 +19,11 @@ final class SpatialHash {
     private double ox;
     private double oy;
     private double oz;
+    /** open-addressing table from a cell to its run of entries: cell key, first entry, end */
+    private long[] tableKey = new long[0];
+    private int[] tableFirst = new int[0];
+    private int[] tableEnd = new int[0];
+    private int tableMask;
     /** visit stamps to report each id once per query */
     private int[] stamp = new int[0];
     private int query;
@@ -60,10 +65,44 @@ final class SpatialHash {
             }
         }
         Arrays.sort(entries, 0, size);
+        index();
         if (stamp.length < count) {
             stamp = new int[count];
             query = 0;
         }
+    }
+
+    /** Fills the cell table from the sorted entries. */
+    private void index() {
+        int cap = Integer.highestOneBit(Math.max(16, 4 * size) - 1) << 1;
+        if (tableKey.length != cap) {
+            tableKey = new long[cap];
+            tableFirst = new int[cap];
+            tableEnd = new int[cap];
+        }
+        Arrays.fill(tableKey, -1L);
+        tableMask = cap - 1;
+        int at = 0;
+        while (at < size) {
+            long cellKey = entries[at] >>> ID_BITS;
+            int end = at + 1;
+            while (end < size && (entries[end] >>> ID_BITS) == cellKey) {
+                end++;
+            }
+            int slot = slot(cellKey);
+            while (tableKey[slot] != -1L) {
+                slot = (slot + 1) & tableMask;
+            }
+            tableKey[slot] = cellKey;
+            tableFirst[slot] = at;
+            tableEnd[slot] = end;
+            at = end;
+        }
+    }
+
+    private int slot(long cellKey) {
+        long h = cellKey * 0x9E3779B97F4A7C15L;
+        return (int) (h >>> 40) & tableMask;
     }
 
     private int cellOf(double v, double origin) {
@@ -99,32 +138,23 @@ final class SpatialHash {
         for (int x = x0; x <= x1; x++) {
             for (int y = y0; y <= y1; y++) {
                 for (int z = z0; z <= z1; z++) {
-                    long first = cellKey(x, y, z) << ID_BITS;
-                    int at = lowerBound(first);
-                    while (at < size && (entries[at] >>> ID_BITS) == (first >>> ID_BITS)) {
+                    long key = cellKey(x, y, z);
+                    int slot = slot(key);
+                    while (tableKey[slot] != -1L && tableKey[slot] != key) {
+                        slot = (slot + 1) & tableMask;
+                    }
+                    if (tableKey[slot] == -1L) {
+                        continue;
+                    }
+                    for (int at = tableFirst[slot]; at < tableEnd[slot]; at++) {
                         int id = (int) (entries[at] & idMask);
                         if (stamp[id] != query) {
                             stamp[id] = query;
                             visitor.visit(id);
                         }
-                        at++;
                     }
                 }
             }
         }
-    }
-
-    private int lowerBound(long key) {
-        int lo = 0;
-        int hi = size;
-        while (lo < hi) {
-            int mid = (lo + hi) >>> 1;
-            if (entries[mid] < key) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
     }
 }
