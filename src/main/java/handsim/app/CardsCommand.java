@@ -143,7 +143,7 @@ final class CardsCommand implements Runnable {
     /** The card scene's camera: looking at the cards' upper half from the thumb's side, slightly above. */
     static Camera camera(ViewerConfig config) {
         ViewerConfig.CameraHome h = config.camera();
-        return new Camera(new ViewerConfig.CameraHome(new Vec3(0, 0.01, 0), Math.toRadians(35), Math.toRadians(15), 0.2,
+        return new Camera(new ViewerConfig.CameraHome(new Vec3(0, 0.0, 0), Math.toRadians(35), Math.toRadians(15), 0.16,
                 h.fovY(), 0.06, 1.0, h.orbitPerPixel(), h.panPerPixel(), h.zoomPerScroll(), h.followRate()));
     }
 
