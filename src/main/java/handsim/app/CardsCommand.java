@@ -123,8 +123,31 @@ final class CardsCommand implements Runnable {
             if (!noFrames) {
                 int n = renderFrames(trajectory, out.resolve("frames"), width, height);
                 System.out.println("wrote " + n + " frames to " + out.resolve("frames"));
+                writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
+                System.out.println("wrote " + out.resolve("strip.png") + " (" + STRIP_FRAMES + " frames, start to end)");
             }
         }
+    }
+
+    static final int STRIP_FRAMES = 5;
+
+    /** Frames evenly spaced from the first to the last, side by side at half size (like thesis Fig. 4.8). */
+    static void writeStrip(Path frames, int count, Path file) throws IOException {
+        java.awt.image.BufferedImage strip = null;
+        for (int k = 0; k < STRIP_FRAMES; k++) {
+            int index = (int) Math.round((count - 1) * k / (double) (STRIP_FRAMES - 1));
+            java.awt.image.BufferedImage im = javax.imageio.ImageIO.read(frames.resolve(String.format("%05d.png", index)).toFile());
+            int w = im.getWidth() / 2;
+            int h = im.getHeight() / 2;
+            if (strip == null) {
+                strip = new java.awt.image.BufferedImage(w * STRIP_FRAMES, h, java.awt.image.BufferedImage.TYPE_INT_RGB);
+            }
+            java.awt.Graphics2D g = strip.createGraphics();
+            g.setRenderingHint(java.awt.RenderingHints.KEY_INTERPOLATION, java.awt.RenderingHints.VALUE_INTERPOLATION_BILINEAR);
+            g.drawImage(im, k * w, 0, w, h, null);
+            g.dispose();
+        }
+        FrameFolder.writePng(strip, file);
     }
 
     /** Renders every frame of a trajectory to DIR/00000.png, ... through the viewer's renderer. */

@@ -59,6 +59,19 @@ public final class TetElasticity implements Energy {
         }
     }
 
+    /** Rest volume of tetrahedron t of the list {@code tets} over positions {@code x} (m³). */
+    public static double volume(double[] x, int[] tets, int t) {
+        double[] dm = new double[9];
+        int n0 = 3 * tets[4 * t];
+        for (int c = 0; c < 3; c++) {
+            int nc = 3 * tets[4 * t + 1 + c];
+            for (int r = 0; r < 3; r++) {
+                dm[r * 3 + c] = x[nc + r] - x[n0 + r];
+            }
+        }
+        return det3(dm) / 6;
+    }
+
     /** Copy sharing the element data, with its own workspace (for another thread). */
     public TetElasticity(TetElasticity other) {
         this.tets = other.tets;

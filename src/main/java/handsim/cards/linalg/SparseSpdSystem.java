@@ -243,6 +243,19 @@ public final class SparseSpdSystem {
 
     private double[] scaling;
 
+    /**
+     * After a failed {@link #factor()}: adds {@code delta} to the (unit, scaled) diagonal and
+     * factors again. Barrier blocks can make the scaled matrix singular to working precision in
+     * directions off the axes; a relative shift of 1e-10 or so restores a usable pivot without
+     * changing the Newton direction noticeably.
+     */
+    public boolean refactorWithShift(double delta) {
+        for (int j = 0; j < dofs; j++) {
+            values[pointers[j + 1] - 1] += delta;
+        }
+        return ldl.factor(matrix, tree) && ldl.isSolvable();
+    }
+
     /** Solves H x = b for the last factorisation; {@code b} (system order) is overwritten by x. */
     public void solve(double[] b, double[] work) {
         for (int i = 0; i < nodes; i++) {

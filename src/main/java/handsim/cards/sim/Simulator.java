@@ -114,7 +114,12 @@ public final class Simulator {
             assemble();
             long a1 = System.nanoTime();
             st.assemblyNanos += a1 - a0;
-            if (!system.factor()) {
+            boolean factored = system.factor();
+            for (double shift = 1e-10; !factored && shift < 1; shift *= 100) {
+                factored = system.refactorWithShift(shift);
+                st.shiftedFactorisations++;
+            }
+            if (!factored) {
                 throw new IllegalStateException("Newton system not positive definite at step " + state.steps);
             }
             system.solve(rhs, work);

@@ -53,18 +53,33 @@ public final class SoftWorld {
         freeCount = f;
         bodies = List.copyOf(b.bodies);
         boneNodes = b.boneGroups.toArray(new int[0][]);
-        // fingertips: fixed-corotated tets, lumped mass ρV/4
-        int[] tetArr = b.tets.stream().mapToInt(Integer::intValue).toArray();
-        int nt = tetArr.length / 4;
-        tets = nt == 0 ? null : new TetElasticity(tetArr, rest,
-                b.tetMu.stream().mapToDouble(Double::doubleValue).toArray(),
-                b.tetLambda.stream().mapToDouble(Double::doubleValue).toArray());
-        for (int t = 0; t < nt; t++) {
-            double m = b.tetDensity.get(t) * tets.restVolume(t) / 4;
+        // fingertips: fixed-corotated tets, lumped mass ρV/4; a tet whose four nodes are all bone
+        // moves rigidly, its energy is constant, and only its mass is kept
+        int[] allTets = b.tets.stream().mapToInt(Integer::intValue).toArray();
+        List<Integer> soft = new ArrayList<>();
+        for (int t = 0; t < allTets.length / 4; t++) {
+            double volume = TetElasticity.volume(rest, allTets, t);
             for (int k = 0; k < 4; k++) {
-                mass[tetArr[4 * t + k]] += m;
+                mass[allTets[4 * t + k]] += b.tetDensity.get(t) * volume / 4;
+            }
+            boolean anyFree = false;
+            for (int k = 0; k < 4; k++) {
+                anyFree |= !dirichlet[allTets[4 * t + k]];
+            }
+            if (anyFree) {
+                soft.add(t);
             }
         }
+        int[] tetArr = new int[4 * soft.size()];
+        double[] tetMu = new double[soft.size()];
+        double[] tetLambda = new double[soft.size()];
+        for (int i = 0; i < soft.size(); i++) {
+            int t = soft.get(i);
+            System.arraycopy(allTets, 4 * t, tetArr, 4 * i, 4);
+            tetMu[i] = b.tetMu.get(t);
+            tetLambda[i] = b.tetLambda.get(t);
+        }
+        tets = soft.isEmpty() ? null : new TetElasticity(tetArr, rest, tetMu, tetLambda);
         // cards: StVK membrane and hinge bending, lumped mass ρtA/3
         int[] triArr = b.tris.stream().mapToInt(Integer::intValue).toArray();
         int nf = triArr.length / 3;
@@ -183,6 +198,7 @@ public final class SoftWorld {
     public int fingertipCount() {
         return boneNodes.length;
     }
+
 
     public CollisionMesh collision() {
         return collision;

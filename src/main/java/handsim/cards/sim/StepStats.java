@@ -13,6 +13,8 @@ public final class StepStats {
     public long lineSearchHalvings;
     public long unconvergedSteps;
     public long patternBuilds;
+    /** factorisations that needed a diagonal shift to find positive pivots */
+    public long shiftedFactorisations;
     public long assemblyNanos;
     public long contactNanos;
     public long solveNanos;
@@ -25,6 +27,7 @@ public final class StepStats {
         lineSearchHalvings += o.lineSearchHalvings;
         unconvergedSteps += o.unconvergedSteps;
         patternBuilds += o.patternBuilds;
+        shiftedFactorisations += o.shiftedFactorisations;
         assemblyNanos += o.assemblyNanos;
         contactNanos += o.contactNanos;
         solveNanos += o.solveNanos;
