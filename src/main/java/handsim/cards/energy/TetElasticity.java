@@ -151,28 +151,26 @@ public final class TetElasticity implements Energy {
 
     /** Adds V̄ P : ∂F/∂x of tetrahedron t (its SVD already in {@code svd}). */
     private void addElementGradient(int t, double[] g) {
-        {
-            double[] s = svd.sigma;
-            double j = s[0] * s[1] * s[2];
-            double m = mu[t];
-            double l = lambda[t];
-            // P = U diag(∂Ψ/∂σ) Vᵀ, ∂Ψ/∂σᵢ = 2μ(σᵢ − 1) + λ(J − 1) σⱼσₖ
-            double p0 = 2 * m * (s[0] - 1) + l * (j - 1) * s[1] * s[2];
-            double p1 = 2 * m * (s[1] - 1) + l * (j - 1) * s[0] * s[2];
-            double p2 = 2 * m * (s[2] - 1) + l * (j - 1) * s[0] * s[1];
-            double[] u = svd.u;
-            double[] v = svd.v;
-            for (int r = 0; r < 3; r++) {
-                for (int c = 0; c < 3; c++) {
-                    q[r * 3 + c] = u[r * 3] * p0 * v[c * 3] + u[r * 3 + 1] * p1 * v[c * 3 + 1] + u[r * 3 + 2] * p2 * v[c * 3 + 2];
-                }
+        double[] s = svd.sigma;
+        double j = s[0] * s[1] * s[2];
+        double m = mu[t];
+        double l = lambda[t];
+        // P = U diag(∂Ψ/∂σ) Vᵀ, ∂Ψ/∂σᵢ = 2μ(σᵢ − 1) + λ(J − 1) σⱼσₖ
+        double p0 = 2 * m * (s[0] - 1) + l * (j - 1) * s[1] * s[2];
+        double p1 = 2 * m * (s[1] - 1) + l * (j - 1) * s[0] * s[2];
+        double p2 = 2 * m * (s[2] - 1) + l * (j - 1) * s[0] * s[1];
+        double[] u = svd.u;
+        double[] v = svd.v;
+        for (int r = 0; r < 3; r++) {
+            for (int c = 0; c < 3; c++) {
+                q[r * 3 + c] = u[r * 3] * p0 * v[c * 3] + u[r * 3 + 1] * p1 * v[c * 3 + 1] + u[r * 3 + 2] * p2 * v[c * 3 + 2];
             }
-            mapToNodes(t, q, gq);
-            for (int k = 0; k < 4; k++) {
-                int n = 3 * tets[4 * t + k];
-                for (int c = 0; c < 3; c++) {
-                    g[n + c] += volume[t] * gq[3 * k + c];
-                }
+        }
+        mapToNodes(t, q, gq);
+        for (int k = 0; k < 4; k++) {
+            int n = 3 * tets[4 * t + k];
+            for (int c = 0; c < 3; c++) {
+                g[n + c] += volume[t] * gq[3 * k + c];
             }
         }
     }

@@ -92,44 +92,21 @@ public final class Jet {
 
     /** this = a b (this must not be a or b). */
     public Jet mul(Jet a, Jet b) {
-        double av = a.v;
-        double bv = b.v;
-        int k = 0;
-        for (int i = 0; i < n; i++) {
-            double agi = a.g[i];
-            double bgi = b.g[i];
-            for (int j = i; j < n; j++, k++) {
-                h[k] = a.h[k] * bv + b.h[k] * av + agi * b.g[j] + bgi * a.g[j];
-            }
-        }
-        for (int i = 0; i < n; i++) {
-            g[i] = a.g[i] * bv + b.g[i] * av;
-        }
-        v = av * bv;
-        return this;
+        return constant(0).product(a, b, 1);
     }
 
     /** this += a b (this must not be a or b). */
     public Jet addMul(Jet a, Jet b) {
-        double av = a.v;
-        double bv = b.v;
-        int k = 0;
-        for (int i = 0; i < n; i++) {
-            double agi = a.g[i];
-            double bgi = b.g[i];
-            for (int j = i; j < n; j++, k++) {
-                h[k] += a.h[k] * bv + b.h[k] * av + agi * b.g[j] + bgi * a.g[j];
-            }
-        }
-        for (int i = 0; i < n; i++) {
-            g[i] += a.g[i] * bv + b.g[i] * av;
-        }
-        v += av * bv;
-        return this;
+        return product(a, b, 1);
     }
 
     /** this −= a b (this must not be a or b). */
     public Jet subMul(Jet a, Jet b) {
+        return product(a, b, -1);
+    }
+
+    /** this += sign · a b by the product rule (this must not be a or b). */
+    private Jet product(Jet a, Jet b, double sign) {
         double av = a.v;
         double bv = b.v;
         int k = 0;
@@ -137,13 +114,13 @@ public final class Jet {
             double agi = a.g[i];
             double bgi = b.g[i];
             for (int j = i; j < n; j++, k++) {
-                h[k] -= a.h[k] * bv + b.h[k] * av + agi * b.g[j] + bgi * a.g[j];
+                h[k] += sign * (a.h[k] * bv + b.h[k] * av + agi * b.g[j] + bgi * a.g[j]);
             }
         }
         for (int i = 0; i < n; i++) {
-            g[i] -= a.g[i] * bv + b.g[i] * av;
+            g[i] += sign * (a.g[i] * bv + b.g[i] * av);
         }
-        v -= av * bv;
+        v += sign * av * bv;
         return this;
     }
 

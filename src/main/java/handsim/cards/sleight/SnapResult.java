@@ -20,12 +20,6 @@ public record SnapResult(double alphaEnd, double objective, double minGap, long 
                          double simulatedSeconds, double wallSeconds, double assemblySeconds, double contactSeconds,
                          double solveSeconds, int maxContacts) {
 
-    /** This result with the wall times of {@code other} (to compare the simulated outcome only). */
-    public SnapResult withTimesOf(SnapResult other) {
-        return new SnapResult(alphaEnd, objective, minGap, steps, newtonIterations, simulatedSeconds, other.wallSeconds,
-                other.assemblySeconds, other.contactSeconds, other.solveSeconds, maxContacts);
-    }
-
     public double newtonIterationsPerSimulatedSecond() {
         return newtonIterations / simulatedSeconds;
     }

@@ -36,38 +36,35 @@ class IpcOracleTest {
         }
     }
 
-    @Test
-    void pointTriangleDistancesTypesAndDerivatives() {
+    /** A stencil kernel: squared distance, gradient and Hessian of the 12 coordinates. */
+    private interface Kernel {
+        double d2(double[] x, double[] g, double[] h);
+    }
+
+    private static void checkStencilCases(String name, String[] fields, java.util.function.Function<double[], DistanceType> type, Kernel kernel) {
         int n = 0;
-        for (JsonNode c : IpcOracle.cases("point_triangle")) {
-            double[] x = IpcOracle.stack(c, "p", "t0", "t1", "t2");
-            assertEquals(c.get("type").asText(), DistanceTypes.pointTriangle(x).ipcName(), "type of case " + n);
+        for (JsonNode c : IpcOracle.cases(name)) {
+            double[] x = IpcOracle.stack(c, fields);
+            assertEquals(c.get("type").asText(), type.apply(x).ipcName(), "type of " + name + " case " + n);
             double[] g = new double[12];
             double[] h = new double[144];
-            double d2 = Distances.pointTriangle(x, g, h);
-            assertClose(c.get("d2").asDouble(), d2, "d2 of case " + n);
-            assertArrayClose(IpcOracle.numbers(c.get("grad")), g, "grad of case " + n);
-            assertArrayClose(IpcOracle.numbers(c.get("hess")), h, "hess of case " + n);
+            double d2 = kernel.d2(x, g, h);
+            assertClose(c.get("d2").asDouble(), d2, "d2 of " + name + " case " + n);
+            assertArrayClose(IpcOracle.numbers(c.get("grad")), g, "grad of " + name + " case " + n);
+            assertArrayClose(IpcOracle.numbers(c.get("hess")), h, "hess of " + name + " case " + n);
             n++;
         }
         assertEquals(60, n);
     }
 
     @Test
+    void pointTriangleDistancesTypesAndDerivatives() {
+        checkStencilCases("point_triangle", new String[] {"p", "t0", "t1", "t2"}, DistanceTypes::pointTriangle, Distances::pointTriangle);
+    }
+
+    @Test
     void edgeEdgeDistancesTypesAndDerivatives() {
-        int n = 0;
-        for (JsonNode c : IpcOracle.cases("edge_edge")) {
-            double[] x = IpcOracle.stack(c, "ea0", "ea1", "eb0", "eb1");
-            assertEquals(c.get("type").asText(), DistanceTypes.edgeEdge(x).ipcName(), "type of case " + n);
-            double[] g = new double[12];
-            double[] h = new double[144];
-            double d2 = Distances.edgeEdge(x, g, h);
-            assertClose(c.get("d2").asDouble(), d2, "d2 of case " + n);
-            assertArrayClose(IpcOracle.numbers(c.get("grad")), g, "grad of case " + n);
-            assertArrayClose(IpcOracle.numbers(c.get("hess")), h, "hess of case " + n);
-            n++;
-        }
-        assertEquals(60, n);
+        checkStencilCases("edge_edge", new String[] {"ea0", "ea1", "eb0", "eb1"}, DistanceTypes::edgeEdge, Distances::edgeEdge);
     }
 
     @Test

@@ -33,7 +33,6 @@ class SnapTrialTest {
         SnapResult still = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0));
         // opposite slides drag the two cards' tops apart: each card turns about its pinch
         SnapResult slid = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.04));
-        System.out.println("reduced snap: still " + still + "\n slid " + slid);
         for (SnapResult r : new SnapResult[] {still, slid}) {
             assertTrue(r.minGap() > 0, "minimum gap " + r.minGap());
             assertEquals(30, r.steps());
@@ -41,8 +40,6 @@ class SnapTrialTest {
         }
         assertTrue(still.alphaEnd() < 1, "aligned without a slide: α = " + still.alphaEnd());
         assertTrue(slid.alphaEnd() > still.alphaEnd() + 2, "slide turns the cards: α = " + slid.alphaEnd());
-        // same parameters, same result bit for bit
-        assertEquals(slid, trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.04)).withTimesOf(slid));
     }
 
     @Test
