@@ -20,7 +20,7 @@ class SnapTrialTest {
         Path dir = Path.of("configs/cards");
         Json snap = Json.load(dir.resolve("snap.json"));
         Json reduced = Json.of("snap.json (reduced)", Json.withOverrides("snap.json", snap.node(),
-                Map.of("trial.duration", "0.3", "fingertip.mesh", "\"coarse\"", "fingertip.softLayers", "1")));
+                Map.of("trial.duration", "0.3", "params.t3", "0.25", "fingertip.mesh", "\"coarse\"", "fingertip.softLayers", "1")));
         return new SnapTrial(SnapConfig.parse(reduced, null), CardsConfig.materials(dir.resolve("materials.json"), null),
                 CardsConfig.solver(dir.resolve("solver.json")));
     }
