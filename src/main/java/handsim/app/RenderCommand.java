@@ -80,6 +80,10 @@ final class RenderCommand implements Callable<Integer> {
         if (fps < 1 || fps > 240) {
             throw new IllegalArgumentException("--fps must be in [1, 240], got " + fps);
         }
+        if (width < 16 || width > 8192 || height < 16 || height > 8192) {
+            throw new IllegalArgumentException("--width and --height must be in [16, 8192] pixels, got " + width + " x " + height);
+        }
+        new OutputPaths().folder("--out", out).check();
         int frames = (int) Math.round(seconds * fps);
         ViewerConfig config = ViewerSession.config();
         try (Scene scene = scene(config); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);

@@ -2,6 +2,7 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.learn.Checkpoints;
 import handsim.learn.DdpgAgent;
 import handsim.learn.EpisodeStats;
 import handsim.learn.LearningCurves;
@@ -15,10 +16,16 @@ import handsim.report.Outputs;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Consumer;
+import java.util.stream.Stream;
 
 /**
  * One training run in its folder ({@code runs/<task>__<name>__<seed>__<time>/}): the merged
@@ -40,6 +47,10 @@ public final class TrainRun {
     /** Provenance: command, seed, commit, and the budget extensions. */
     public static final String RUN_JSON = "run.json";
     public static final String CHECKPOINT = "checkpoint.zip";
+    /** The checkpoint before the last one, kept for a resume that finds the last one damaged. */
+    public static final String PREVIOUS_CHECKPOINT = "checkpoint-previous.zip";
+    /** The folder of the policy snapshots {@code episode-N.json}. */
+    public static final String SNAPSHOTS = "policies";
     public static final String METRICS = "metrics.csv";
     public static final String POLICY = "policy.json";
     /** A warm-started run's copy of its imitation dataset. */
@@ -188,19 +199,168 @@ public final class TrainRun {
         return extended;
     }
 
-    /**
-     * Continues the run in {@code dir} from its last checkpoint, or from the start when it was
-     * stopped before its first one.
-     */
+    /** {@link #resume(Path, ThrowEnvs, handsim.rollout.Rollouts, boolean, Consumer)} without fallback, notes to standard error. */
     public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts) throws IOException {
+        return resume(dir, envs, rollouts, false, System.err::println);
+    }
+
+    /**
+     * Continues the run in {@code dir} from its checkpoint. A run stopped before its first
+     * checkpoint (it has written no checkpoint and no policy yet) starts again from episode 1:
+     * the episodes it played are played again, the same. When a run that had a checkpoint lacks a
+     * usable one (missing, or damaged), the resume is refused with what is missing, and nothing in
+     * the folder changes, unless {@code fromSnapshot}: then the run goes on from the newest intact
+     * of {@link #PREVIOUS_CHECKPOINT} (the checkpoint before the last: the run stays the one it
+     * was) and the policy snapshots {@code policies/episode-N.json} (the actor as it was at
+     * episode N with a new critic and an empty replay buffer, {@link Trainer#continueFrom}: the
+     * rest of the run differs from the lost one), recorded in {@code run.json} under
+     * {@code "fallbacks"}. Leftovers of a killed write are deleted; {@code notes} hears what was
+     * done.
+     */
+    public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, boolean fromSnapshot,
+            Consumer<String> notes) throws IOException {
         TrainConfig config = savedConfig(dir);
-        Path checkpoint = dir.resolve(CHECKPOINT);
+        String problem;
+        try {
+            Trainer trainer = loadTrainer(dir.resolve(CHECKPOINT), config);
+            sweepTemporaryFiles(dir);
+            return new TrainRun(dir, config, envs, rollouts, trainer);
+        } catch (NoSuchFileException e) {
+            if (!everCheckpointed(dir)) {
+                notes.accept(dir + " stopped before its first checkpoint: training from episode 1");
+                sweepTemporaryFiles(dir);
+                return new TrainRun(dir, config, envs, rollouts, initialTrainer(dir, config, envs));
+            }
+            problem = CHECKPOINT + " is missing";
+        } catch (Checkpoints.Damaged e) {
+            problem = CHECKPOINT + " is damaged (" + e.reason() + ")";
+        }
+        if (!fromSnapshot) {
+            throw new IllegalArgumentException(dir + ": " + problem + ", so the run cannot go on where it stopped (nothing "
+                    + "was changed); add --from-snapshot to go on from its newest intact earlier checkpoint or policy snapshot");
+        }
+        Fallback fallback = fallback(dir, config, envs, notes);
+        if (fallback == null) {
+            throw new IllegalArgumentException(dir + ": " + problem + " and the run has no intact earlier checkpoint ("
+                    + PREVIOUS_CHECKPOINT + ") or policy snapshot (" + SNAPSHOTS + "/episode-N.json) to go on from");
+        }
+        notes.accept(dir + ": " + problem + "; going on from " + fallback.what());
+        sweepTemporaryFiles(dir);
+        ObjectNode record = Json.mapper().createObjectNode();
+        record.put("from", fallback.what());
+        record.put("episodes", fallback.trainer().episodes());
+        record.put("because", problem);
+        record.put("at", LocalDateTime.now().toString());
+        ObjectNode runJson = (ObjectNode) Json.load(dir.resolve(RUN_JSON)).node();
+        runJson.withArray("fallbacks").add(record);
+        Outputs.writeJson(dir.resolve(RUN_JSON), runJson);
+        return new TrainRun(dir, config, envs, rollouts, fallback.trainer());
+    }
+
+    /** Where a resume went on from when the checkpoint was lost: what it was and the learner it gave. */
+    private record Fallback(String what, Trainer trainer) {
+    }
+
+    /** The learner saved in {@code file}; a missing file is {@link NoSuchFileException}, any other failure {@link Checkpoints.Damaged}. */
+    private static Trainer loadTrainer(Path file, TrainConfig config) throws IOException {
+        try {
+            return Trainer.resume(file, config.learner());
+        } catch (NoSuchFileException | Checkpoints.Damaged e) {
+            throw e;
+        } catch (IOException | RuntimeException e) { // intact zip, but a trainer state that does not fit the run
+            throw new Checkpoints.Damaged(file, e);
+        }
+    }
+
+    /** Whether the run in {@code dir} got as far as a checkpoint (a checkpoint writes the policy and its snapshot). */
+    private static boolean everCheckpointed(Path dir) throws IOException {
+        return Files.exists(dir.resolve(POLICY)) || Files.exists(dir.resolve(PREVIOUS_CHECKPOINT)) || !snapshots(dir).isEmpty();
+    }
+
+    /** The learner of a run's first episode: as {@link #start} made it, from the dataset or policy copied into the run. */
+    private static Trainer initialTrainer(Path dir, TrainConfig config, ThrowEnvs envs) throws IOException {
         Path dataset = dir.resolve(INIT_DATASET);
         Path policy = dir.resolve(INIT_POLICY);
-        Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
-                : freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
-                        Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
-        return new TrainRun(dir, config, envs, rollouts, trainer);
+        return freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
+                Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
+    }
+
+    /** The newest intact earlier checkpoint, else the newest intact policy snapshot, else null. */
+    private static Fallback fallback(Path dir, TrainConfig config, ThrowEnvs envs, Consumer<String> notes) throws IOException {
+        try {
+            Trainer t = loadTrainer(dir.resolve(PREVIOUS_CHECKPOINT), config);
+            return new Fallback(PREVIOUS_CHECKPOINT + " (episode " + t.episodes() + ")", t);
+        } catch (NoSuchFileException e) {
+            // no earlier checkpoint: try the snapshots
+        } catch (Checkpoints.Damaged e) {
+            notes.accept(e.getMessage() + ": skipped");
+        }
+        for (Path snapshot : snapshots(dir)) {
+            try {
+                return new Fallback(SNAPSHOTS + "/" + snapshot.getFileName() + " (episode "
+                        + ThrowPolicyFile.load(snapshot).provenance().path("episodes").asLong() + ", with a new critic and an "
+                        + "empty replay buffer: the rest of the run differs from the lost one)", fromSnapshot(dir, snapshot, config, envs));
+            } catch (IOException | RuntimeException e) {
+                notes.accept(new Checkpoints.Damaged(snapshot, e).getMessage() + ": skipped");
+            }
+        }
+        return null;
+    }
+
+    /** The policy snapshots of a run, newest first. */
+    private static List<Path> snapshots(Path dir) throws IOException {
+        Path folder = dir.resolve(SNAPSHOTS);
+        if (!Files.isDirectory(folder)) {
+            return List.of();
+        }
+        try (Stream<Path> files = Files.list(folder)) {
+            return files.filter(f -> f.getFileName().toString().matches("episode-\\d+\\.json"))
+                    .sorted(Comparator.comparing(Path::getFileName).reversed()).toList();
+        }
+    }
+
+    /**
+     * The learner of a run going on from a policy snapshot: the snapshot's actor and observation
+     * statistics (counting as the decisions played), the run's episodes, decisions, moving average
+     * and wall time as they stood at the snapshot (from its provenance and metrics.csv).
+     */
+    private static Trainer fromSnapshot(Path dir, Path snapshot, TrainConfig config, ThrowEnvs envs) throws IOException {
+        ThrowPolicyFile f = ThrowPolicyFile.load(snapshot);
+        Json p = Json.of(snapshot + "!provenance", f.provenance());
+        long episodes = p.longValue("episodes"), decisions = p.longValue("decisions");
+        if (!f.task().equals(envs.task()) || !f.object().equals(envs.object().name()) || f.state() != envs.state().encoding()) {
+            throw new IllegalArgumentException("it is a policy of the " + f.task() + " task with a " + f.object()
+                    + ", not of this run");
+        }
+        TrainingConfig l = config.learner();
+        DdpgAgent agent = Warmstart.seededAgent(l, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
+        agent.startActorFrom(f.policy(), Math.max(2, decisions));
+        List<EpisodeStats> rows = new ArrayList<>();
+        Path metrics = dir.resolve(METRICS);
+        if (Files.isRegularFile(metrics)) {
+            for (EpisodeStats s : MetricsCsv.read(metrics, w -> { })) {
+                if (s.episode() <= episodes) {
+                    rows.add(s);
+                }
+            }
+        }
+        return Trainer.continueFrom(l, agent, episodes, decisions, rows.stream().map(EpisodeStats::reward).toList(),
+                rows.isEmpty() ? 0 : rows.get(rows.size() - 1).wallSeconds());
+    }
+
+    /** Deletes what writes killed in the run's folders left behind ({@link Outputs}). */
+    private static void sweepTemporaryFiles(Path dir) throws IOException {
+        Outputs.sweep(dir);
+        Outputs.sweep(dir.resolve(SNAPSHOTS));
+    }
+
+    /**
+     * This run with its budget raised to {@code episodes} ({@link #extend}, which records it in
+     * the folder); to be called on a run just resumed, before it trains.
+     */
+    public TrainRun extendedTo(long episodes, ObjectNode provenance) throws IOException {
+        TrainConfig extended = extend(dir, episodes, provenance);
+        return new TrainRun(dir, extended, envs, rollouts, trainer.withConfig(extended.learner()));
     }
 
     public Path dir() {
@@ -262,7 +422,11 @@ public final class TrainRun {
 
     /** The learner, its policy as a throw policy file, and the curves so far. */
     private void saveCheckpoint() throws IOException {
-        trainer.checkpoint(dir.resolve(CHECKPOINT));
+        Path checkpoint = dir.resolve(CHECKPOINT);
+        if (Files.exists(checkpoint)) {
+            Outputs.keepCopy(checkpoint, dir.resolve(PREVIOUS_CHECKPOINT));
+        }
+        trainer.checkpoint(checkpoint);
         ObjectNode provenance = Json.mapper().createObjectNode();
         provenance.put("run", dir.getFileName().toString());
         provenance.put("episodes", trainer.episodes());
@@ -274,7 +438,7 @@ public final class TrainRun {
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
         ThrowPolicyFile file = new ThrowPolicyFile(config.run().task(), config.run().object(), envs.state().encoding(), envs.space(), actor, provenance);
         file.save(dir.resolve(POLICY));
-        file.save(dir.resolve("policies").resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
+        file.save(dir.resolve(SNAPSHOTS).resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
         List<EpisodeStats> stats = MetricsCsv.read(dir.resolve(METRICS));
         String title = config.run().task() + " task, " + config.run().object() + " (" + config.run().name() + ", seed "
                 + config.learner().seed() + ")";
