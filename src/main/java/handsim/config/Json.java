@@ -231,9 +231,16 @@ public final class Json {
         return v;
     }
 
-    /** A number as people write it: 0.01, 1E-6, 2.5E+8, 100. */
+    /** A number as people write it: 100, 0.01, 1E-6, 2.5E+8. */
     public static String show(double v) {
-        return Double.isFinite(v) ? java.math.BigDecimal.valueOf(v).stripTrailingZeros().toString() : Double.toString(v);
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        if (v == Math.rint(v) && Math.abs(v) < 1e7) {
+            return Long.toString((long) v);
+        }
+        java.math.BigDecimal b = java.math.BigDecimal.valueOf(v).stripTrailingZeros();
+        return Math.abs(v) >= 1e-4 && Math.abs(v) < 1e7 ? b.toPlainString() : b.toString();
     }
 
     /** A required number strictly greater than zero. */

@@ -46,8 +46,8 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
         solver.allow("comment");
         Vec3 gravity = j.vec3("gravity");
         if (!(gravity.norm() >= MIN_GRAVITY && gravity.norm() <= MAX_GRAVITY)) {
-            throw j.fieldError("gravity", "its magnitude must be in [" + MIN_GRAVITY + ", " + MAX_GRAVITY + "] m/s^2, got "
-                    + gravity + " (" + gravity.norm() + " m/s^2)");
+            throw j.fieldError("gravity", "its magnitude must be in [" + Json.show(MIN_GRAVITY) + ", " + Json.show(MAX_GRAVITY)
+                    + "] m/s^2, got " + Json.show(gravity.norm()) + " m/s^2 " + gravity);
         }
         SimConfig c = new SimConfig(
                 j.number("timeStep", MIN_TIME_STEP, MAX_TIME_STEP),

@@ -399,15 +399,19 @@ public final class TrainRun {
                     progress.onEpisode(s);
                 }
             };
+            boolean saved = false;
             while (trainer.episodes() < budget) {
                 long before = trainer.episodes();
                 trainer.runRound(this::play, listener, (int) (budget - trainer.episodes()));
-                if (every > 0 && trainer.episodes() / every != before / every) {
+                saved = every > 0 && trainer.episodes() / every != before / every;
+                if (saved) {
                     saveCheckpoint();
                 }
             }
+            if (!saved) {
+                saveCheckpoint();
+            }
         }
-        saveCheckpoint();
         progress.finish();
         out.println("wrote " + dir.resolve(POLICY) + ", " + CHECKPOINT + ", " + METRICS + ", learning.png, losses.png");
     }
