@@ -821,7 +821,11 @@ final class EvaluateCommand implements Callable<Integer> {
         Json j = Json.load(file);
         List<double[]> out = new ArrayList<>();
         for (Json g : j.array(key)) {
-            out.add(size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size));
+            double[] goal = size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size);
+            if (key.equals("heights") && !(goal[0] > HeightGoals.LOWEST && goal[0] < HeightGoals.HIGHEST)) {
+                throw g.error("a height goal must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST + ") m, got " + goal[0]);
+            }
+            out.add(goal);
         }
         if (out.isEmpty()) {
             throw j.fieldError(key, "at least one goal is needed");

@@ -40,7 +40,8 @@ public final class Main implements Runnable {
         });
         cli.setParameterExceptionHandler((ex, params) -> {
             CommandLine c = ex.getCommandLine();
-            c.getErr().println("handsim " + c.getCommandName() + ": " + ex.getMessage() + " (see --help)");
+            String who = c.getParent() == null ? "handsim" : "handsim " + c.getCommandName();
+            c.getErr().println(who + ": " + ex.getMessage().lines().findFirst().orElse("") + " (see --help)");
             return 2;
         });
         return cli.execute(args);

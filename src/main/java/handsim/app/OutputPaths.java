@@ -63,7 +63,7 @@ final class OutputPaths {
             if (existing == null || !Files.isDirectory(existing)) {
                 throw refused(w, "cannot be made: " + existing + " is a file, not a folder");
             }
-            probe(w, existing);
+            probe(w, existing, w.isFolder() ? "" : w.path().getFileName().toString());
         }
         for (Wanted w : wanted) {
             Path dir = w.isFolder() ? w.path() : w.path().getParent();
@@ -75,14 +75,18 @@ final class OutputPaths {
         }
     }
 
-    /** Shows that files can be created in {@code dir}: creates one and deletes it. */
-    private static void probe(Wanted w, Path dir) {
-        Path probe = dir.resolve(".handsim-probe-" + ProcessHandle.current().pid() + "-" + System.nanoTime());
+    /**
+     * Shows that files can be created in {@code dir}: creates one and deletes it, named as long
+     * as the temporary file of an atomic write of {@code name} will be (a name too long fails here).
+     */
+    private static void probe(Wanted w, Path dir, String name) {
+        Path probe = dir.resolve("." + name + ".handsim-probe-" + ProcessHandle.current().pid() + "-" + System.nanoTime());
         try {
             Files.createFile(probe);
             Files.delete(probe);
-        } catch (IOException e) {
-            throw refused(w, "cannot be written: no new file can be made in " + dir + " (" + reason(e) + ")");
+        } catch (IOException | java.nio.file.InvalidPathException e) {
+            throw refused(w, "cannot be written: no such new file can be made in " + dir + " ("
+                    + (e instanceof IOException io ? reason(io) : e.getMessage()) + ")");
         }
     }
 

@@ -84,6 +84,10 @@ final class RenderCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--width and --height must be in [16, 8192] pixels, got " + width + " x " + height);
         }
         new OutputPaths().folder("--out", out).check();
+        if (!ViewerSession.hasDisplay()) {
+            throw new IllegalArgumentException("no X display (DISPLAY is not set): render draws with OpenGL "
+                    + "(scripts/handsim render runs it under xvfb-run)");
+        }
         int frames = (int) Math.round(seconds * fps);
         ViewerConfig config = ViewerSession.config();
         try (Scene scene = scene(config); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);
@@ -106,6 +110,10 @@ final class RenderCommand implements Callable<Integer> {
 
     private Scene scene(ViewerConfig viewerConfig) {
         if (controller == null && task == null && !plan) {
+            if (!object.equals("sphere")) {
+                throw new IllegalArgumentException("--object goes with --task or --controller (the held ball is a sphere), got "
+                        + object);
+            }
             HandModel model = Runtime.model(null);
             Simulator sim = Runtime.simulator(model, Runtime.simConfig());
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));

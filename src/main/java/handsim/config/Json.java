@@ -76,7 +76,7 @@ public final class Json {
             return "a comment, which JSON does not have (use a \"comment\" field)";
         }
         return message.replaceAll(" \\(code [^)]*\\)", "").replaceAll(":? *enable `.*", "")
-                .replaceAll(" \\(start marker at .*", "").lines().findFirst().orElse("");
+                .replaceAll("\\s*\\((for|start marker)[^\n]*\\[Source.*", "").lines().findFirst().orElse("");
     }
 
     public static Json of(String source, JsonNode node) {
