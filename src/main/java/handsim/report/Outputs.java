@@ -37,7 +37,7 @@ import javax.imageio.ImageIO;
  * 022), and folders with 0777 less the umask (0755). A temporary file never outlives its write:
  * it is deleted when the write fails, when the JVM exits (a normal end, an error, Ctrl-C or a
  * plain {@code kill}), and, when a {@code kill -9} left one behind, by the first write of a later
- * run into its folder (it names the process that wrote it, and that process no longer runs).
+ * run into its folder (it names the process that wrote it, and that process has ended).
  */
 public final class Outputs {
 
@@ -140,7 +140,7 @@ public final class Outputs {
         }
     }
 
-    /** Deletes the temporary files in {@code dir} whose writing process no longer runs; returns how many. */
+    /** Deletes the temporary files in {@code dir} whose writing process has ended; returns how many. */
     public static int sweep(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
             return 0;

@@ -62,6 +62,21 @@ record CliRun(int status, String out, String err) {
         return files;
     }
 
+    /** Copies the folder {@code from} with everything in it to {@code to}; returns {@code to}. */
+    static Path copyTree(Path from, Path to) throws IOException {
+        try (Stream<Path> all = Files.walk(from)) {
+            for (Path f : all.toList()) {
+                Path target = to.resolve(from.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(f, target);
+                }
+            }
+        }
+        return to;
+    }
+
     /** The temporary files of interrupted writes under {@code dir} ({@link Outputs}). */
     static List<Path> temporaryFiles(Path dir) throws IOException {
         try (Stream<Path> all = Files.walk(dir)) {

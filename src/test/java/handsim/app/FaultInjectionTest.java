@@ -211,17 +211,7 @@ class FaultInjectionTest {
     private Path home(Map<String, Consumer<ObjectNode>> edits) throws IOException {
         Path home = tmp.resolve("home");
         for (String part : List.of("models", "configs")) {
-            Path from = Home.resolve(part);
-            try (Stream<Path> all = Files.walk(from)) {
-                for (Path f : all.toList()) {
-                    Path to = home.resolve(part).resolve(from.relativize(f).toString());
-                    if (Files.isDirectory(f)) {
-                        Files.createDirectories(to);
-                    } else {
-                        Files.copy(f, to);
-                    }
-                }
-            }
+            CliRun.copyTree(Home.resolve(part), home.resolve(part));
         }
         for (Map.Entry<String, Consumer<ObjectNode>> e : edits.entrySet()) {
             Path file = home.resolve(e.getKey());

@@ -71,27 +71,21 @@ class FaultInjectionTrainingTest {
 
     /** A copy of the stopped run to damage. */
     private static Path copyOfStopped(String name) throws IOException {
-        Path copy = tmp.resolve("cases").resolve(name);
-        try (Stream<Path> all = Files.walk(stopped)) {
-            for (Path f : all.toList()) {
-                Path to = copy.resolve(stopped.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(to);
-                } else {
-                    Files.copy(f, to);
-                }
-            }
-        }
-        return copy;
+        return CliRun.copyTree(stopped, tmp.resolve("cases").resolve(name));
+    }
+
+    /** {@code train --resume run} fails with status 2 and one line naming {@code parts}, and leaves every file as it was. */
+    private static void assertResumeRefusedLeavingAllAsItWas(Path run, String... parts) throws IOException {
+        Map<String, String> before = CliRun.contents(run);
+        CliRun.of("train", "--resume", run.toString()).assertRefused(2, parts);
+        assertEquals(before, CliRun.contents(run), "metrics, policy and snapshots untouched");
     }
 
     @Test
     void aResumeWithoutItsCheckpointIsRefusedAndChangesNothing() throws IOException {
         Path run = copyOfStopped("missing");
         Files.delete(run.resolve(TrainRun.CHECKPOINT));
-        Map<String, String> before = CliRun.contents(run);
-        CliRun.of("train", "--resume", run.toString()).assertRefused(2, "checkpoint.zip is missing", "--from-snapshot");
-        assertEquals(before, CliRun.contents(run), "metrics, policy and snapshots untouched");
+        assertResumeRefusedLeavingAllAsItWas(run, "checkpoint.zip is missing", "--from-snapshot");
     }
 
     @Test
@@ -100,18 +94,14 @@ class FaultInjectionTrainingTest {
         Path checkpoint = run.resolve(TrainRun.CHECKPOINT);
         byte[] whole = Files.readAllBytes(checkpoint);
         Files.write(checkpoint, java.util.Arrays.copyOf(whole, whole.length / 2));
-        Map<String, String> before = CliRun.contents(run);
-        CliRun.of("train", "--resume", run.toString()).assertRefused(2, "checkpoint.zip is damaged", "--from-snapshot");
-        assertEquals(before, CliRun.contents(run));
+        assertResumeRefusedLeavingAllAsItWas(run, "checkpoint.zip is damaged", "--from-snapshot");
     }
 
     @Test
     void aCheckpointWithoutItsStateIsRefusedAndChangesNothing() throws IOException {
         Path run = copyOfStopped("stateless");
         withoutEntry(run.resolve(TrainRun.CHECKPOINT), "state.json");
-        Map<String, String> before = CliRun.contents(run);
-        CliRun.of("train", "--resume", run.toString()).assertRefused(2, "checkpoint.zip is damaged", "state.json");
-        assertEquals(before, CliRun.contents(run));
+        assertResumeRefusedLeavingAllAsItWas(run, "checkpoint.zip is damaged", "state.json");
     }
 
     @Test
