@@ -19,13 +19,10 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Consumer;
-import java.util.stream.Stream;
 
 /**
  * One training run in its folder ({@code runs/<task>__<name>__<seed>__<time>/}): the merged
@@ -222,11 +219,11 @@ public final class TrainRun {
         TrainConfig config = savedConfig(dir);
         String problem;
         try {
-            Trainer trainer = loadTrainer(dir.resolve(CHECKPOINT), config);
+            Trainer trainer = ResumePoint.checkpoint(dir.resolve(CHECKPOINT), config);
             sweepTemporaryFiles(dir);
             return new TrainRun(dir, config, envs, rollouts, trainer);
         } catch (NoSuchFileException e) {
-            if (!everCheckpointed(dir)) {
+            if (!ResumePoint.everCheckpointed(dir)) {
                 notes.accept(dir + " stopped before its first checkpoint: training from episode 1");
                 sweepTemporaryFiles(dir);
                 return new TrainRun(dir, config, envs, rollouts, initialTrainer(dir, config, envs));
@@ -239,7 +236,7 @@ public final class TrainRun {
             throw new IllegalArgumentException(dir + ": " + problem + ", so the run cannot go on where it stopped (nothing "
                     + "was changed); add --from-snapshot to go on from its newest intact earlier checkpoint or policy snapshot");
         }
-        Fallback fallback = fallback(dir, config, envs, notes);
+        ResumePoint.Found fallback = ResumePoint.fallback(dir, config, envs, notes);
         if (fallback == null) {
             throw new IllegalArgumentException(dir + ": " + problem + " and the run has no intact earlier checkpoint ("
                     + PREVIOUS_CHECKPOINT + ") or policy snapshot (" + SNAPSHOTS + "/episode-N.json) to go on from");
@@ -257,95 +254,12 @@ public final class TrainRun {
         return new TrainRun(dir, config, envs, rollouts, fallback.trainer());
     }
 
-    /** Where a resume went on from when the checkpoint was lost: what it was and the learner it gave. */
-    private record Fallback(String what, Trainer trainer) {
-    }
-
-    /** The learner saved in {@code file}; a missing file is {@link NoSuchFileException}, any other failure {@link Checkpoints.Damaged}. */
-    private static Trainer loadTrainer(Path file, TrainConfig config) throws IOException {
-        try {
-            return Trainer.resume(file, config.learner());
-        } catch (NoSuchFileException | Checkpoints.Damaged e) {
-            throw e;
-        } catch (IOException | RuntimeException e) { // intact zip, but a trainer state that does not fit the run
-            throw new Checkpoints.Damaged(file, e);
-        }
-    }
-
-    /** Whether the run in {@code dir} got as far as a checkpoint (a checkpoint writes the policy and its snapshot). */
-    private static boolean everCheckpointed(Path dir) throws IOException {
-        return Files.exists(dir.resolve(POLICY)) || Files.exists(dir.resolve(PREVIOUS_CHECKPOINT)) || !snapshots(dir).isEmpty();
-    }
-
     /** The learner of a run's first episode: as {@link #start} made it, from the dataset or policy copied into the run. */
     private static Trainer initialTrainer(Path dir, TrainConfig config, ThrowEnvs envs) throws IOException {
         Path dataset = dir.resolve(INIT_DATASET);
         Path policy = dir.resolve(INIT_POLICY);
         return freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
                 Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
-    }
-
-    /** The newest intact earlier checkpoint, else the newest intact policy snapshot, else null. */
-    private static Fallback fallback(Path dir, TrainConfig config, ThrowEnvs envs, Consumer<String> notes) throws IOException {
-        try {
-            Trainer t = loadTrainer(dir.resolve(PREVIOUS_CHECKPOINT), config);
-            return new Fallback(PREVIOUS_CHECKPOINT + " (episode " + t.episodes() + ")", t);
-        } catch (NoSuchFileException e) {
-            // no earlier checkpoint: try the snapshots
-        } catch (Checkpoints.Damaged e) {
-            notes.accept(e.getMessage() + ": skipped");
-        }
-        for (Path snapshot : snapshots(dir)) {
-            try {
-                return new Fallback(SNAPSHOTS + "/" + snapshot.getFileName() + " (episode "
-                        + ThrowPolicyFile.load(snapshot).provenance().path("episodes").asLong() + ", with a new critic and an "
-                        + "empty replay buffer: the rest of the run differs from the lost one)", fromSnapshot(dir, snapshot, config, envs));
-            } catch (IOException | RuntimeException e) {
-                notes.accept(new Checkpoints.Damaged(snapshot, e).getMessage() + ": skipped");
-            }
-        }
-        return null;
-    }
-
-    /** The policy snapshots of a run, newest first. */
-    private static List<Path> snapshots(Path dir) throws IOException {
-        Path folder = dir.resolve(SNAPSHOTS);
-        if (!Files.isDirectory(folder)) {
-            return List.of();
-        }
-        try (Stream<Path> files = Files.list(folder)) {
-            return files.filter(f -> f.getFileName().toString().matches("episode-\\d+\\.json"))
-                    .sorted(Comparator.comparing(Path::getFileName).reversed()).toList();
-        }
-    }
-
-    /**
-     * The learner of a run going on from a policy snapshot: the snapshot's actor and observation
-     * statistics (counting as the decisions played), the run's episodes, decisions, moving average
-     * and wall time as they stood at the snapshot (from its provenance and metrics.csv).
-     */
-    private static Trainer fromSnapshot(Path dir, Path snapshot, TrainConfig config, ThrowEnvs envs) throws IOException {
-        ThrowPolicyFile f = ThrowPolicyFile.load(snapshot);
-        Json p = Json.of(snapshot + "!provenance", f.provenance());
-        long episodes = p.longValue("episodes"), decisions = p.longValue("decisions");
-        if (!f.task().equals(envs.task()) || !f.object().equals(envs.object().name()) || f.state() != envs.state().encoding()) {
-            throw new IllegalArgumentException("it is a policy of the " + f.task() + " task with a " + f.object()
-                    + ", not of this run");
-        }
-        TrainingConfig l = config.learner();
-        DdpgAgent agent = Warmstart.seededAgent(l, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
-        agent.startActorFrom(f.policy(), Math.max(2, decisions));
-        List<EpisodeStats> rows = new ArrayList<>();
-        Path metrics = dir.resolve(METRICS);
-        if (Files.isRegularFile(metrics)) {
-            for (EpisodeStats s : MetricsCsv.read(metrics, w -> { })) {
-                if (s.episode() <= episodes) {
-                    rows.add(s);
-                }
-            }
-        }
-        return Trainer.continueFrom(l, agent, episodes, decisions, rows.stream().map(EpisodeStats::reward).toList(),
-                rows.isEmpty() ? 0 : rows.get(rows.size() - 1).wallSeconds());
     }
 
     /** Deletes what writes killed in the run's folders left behind ({@link Outputs}). */
