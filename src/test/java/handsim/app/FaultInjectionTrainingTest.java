@@ -74,6 +74,11 @@ class FaultInjectionTrainingTest {
         return CliRun.copyTree(stopped, tmp.resolve("cases").resolve(name));
     }
 
+    /** A copy of the finished reference run to damage. */
+    private static Path copyOfReference(String name) throws IOException {
+        return CliRun.copyTree(reference, tmp.resolve("cases").resolve(name));
+    }
+
     /** {@code train --resume run} fails with status 2 and one line naming {@code parts}, and leaves every file as it was. */
     private static void assertResumeRefusedLeavingAllAsItWas(Path run, String... parts) throws IOException {
         Map<String, String> before = CliRun.contents(run);
@@ -106,11 +111,11 @@ class FaultInjectionTrainingTest {
 
     @Test
     void fromSnapshotGoesOnFromThePreviousCheckpointAndEndsLikeAnUninterruptedRun() throws IOException {
-        Path run = copyOfStopped("previous");
+        Path run = copyOfReference("previous"); // its checkpoints: after episode 3, and the one before, after 2
         Files.writeString(run.resolve(TrainRun.CHECKPOINT), "not a zip");
         CliRun r = CliRun.of("train", "--resume", run.toString(), "--from-snapshot");
         assertEquals(0, r.status(), r.toString());
-        assertTrue(r.out().contains("going on from checkpoint-previous.zip (episode 1)"), r.out());
+        assertTrue(r.out().contains("going on from checkpoint-previous.zip (episode 2)"), r.out());
         assertSameRun(reference, run);
         JsonNode fallback = Json.load(run.resolve(TrainRun.RUN_JSON)).node().get("fallbacks").get(0);
         assertTrue(fallback.get("from").asText().startsWith(TrainRun.PREVIOUS_CHECKPOINT), fallback.toString());
