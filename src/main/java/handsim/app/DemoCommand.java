@@ -58,6 +58,10 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--headless", description = "run headless even when a display is available")
     boolean headless;
 
+    @Option(names = "--export", paramLabel = "FILE", description = "headless: also write the run's animation (FILE.glb, "
+            + "FILE.gltf or FILE.bvh; see export)")
+    Path export;
+
     /** The controller the headless run uses. */
     private String controllerShown = "nominal";
 
@@ -80,6 +84,10 @@ final class DemoCommand implements Callable<Integer> {
         }
         HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
         String controller = bestController(object);
+        if (export != null && !headless && ViewerSession.hasDisplay()) {
+            throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
+        }
+        RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
             return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, false, 0, null);
         }
@@ -96,7 +104,7 @@ final class DemoCommand implements Callable<Integer> {
                 ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
         try {
-            run(evaluation, limits, goals, dir);
+            run(evaluation, limits, goals, dir, exported);
         } catch (RuntimeException e) { // a diverged world, a demo that gave up: no run folder is left half-written
             RunFolders.release(dir);
             throw e;
@@ -104,8 +112,12 @@ final class DemoCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** The headless demo: throws until --loops, giving up after limits' failed throw-ins in a row; then its run folder. */
-    private void run(CatchEvaluation evaluation, EpisodeLimits limits, HeightGoals goals, Path dir) throws IOException {
+    /**
+     * The headless demo: throws until --loops, giving up after limits' failed throw-ins in a row;
+     * then its run folder, and the animation if {@code exported} is not null.
+     */
+    private void run(CatchEvaluation evaluation, EpisodeLimits limits, HeightGoals goals, Path dir, RunExport exported)
+            throws IOException {
         List<LoopRecord> throwsMade = new ArrayList<>();
         List<Long> throwSeeds = new ArrayList<>();
         int episodes = 0, firstCatchMisses = 0, failedInARow = 0;
@@ -122,6 +134,9 @@ final class DemoCommand implements Callable<Integer> {
                 CatchThrowEpisode episode = evaluation.start(sim, s);
                 while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
                     LoopRecord r = evaluation.tick(episode, s); // a divergence names the seed and loop
+                    if (exported != null) {
+                        exported.afterTick(sim);
+                    }
                     if (r == null) {
                         continue;
                     }
@@ -141,6 +156,9 @@ final class DemoCommand implements Callable<Integer> {
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
+        if (exported != null) {
+            exported.write("handsim demo: height task, " + object + ", " + controllerShown + " controller, seed " + seed);
+        }
     }
 
     private void writeRun(Path dir, List<LoopRecord> loopsMade, List<Long> seeds, int episodes, int firstCatchMisses,

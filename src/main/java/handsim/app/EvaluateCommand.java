@@ -1,5 +1,6 @@
 package handsim.app;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -10,9 +11,11 @@ import handsim.control.ControllerConfig;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
+import handsim.report.EpisodeJournal;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.rollout.LocalRollouts;
+import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
@@ -42,7 +45,9 @@ import java.util.concurrent.Callable;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code handsim evaluate}: seeded catch-and-throw episodes of a task with the nominal or a
@@ -79,7 +84,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** Throws a height episode attempts after the first catch unless --loops says otherwise. */
     static final int HEIGHT_DEFAULT_LOOPS = 10;
-    /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of 50 (issue 7). */
+    /** The most flip-and-catch loops a flip episode runs to unless --loops says otherwise: twice the can's goal of a mean of 50 (docs/results.md). */
     static final int FLIP_DEFAULT_LOOPS = 100;
 
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch (default "
@@ -134,8 +139,16 @@ final class EvaluateCommand implements Callable<Integer> {
             + "world first (handsim.task.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
     boolean plan;
 
-    @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON")
+    @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON, with its provenance (commit, "
+            + "command line, SHA-256 of every config, model and policy file read); while the run goes, each finished episode is "
+            + "kept in FILE.episodes.jsonl, and the same command run again after a kill runs only the episodes not yet finished")
     Path json;
+
+    @Spec
+    CommandSpec spec;
+
+    /** The finished episodes of this run and of an earlier, interrupted run of the same command (with --json), or null. */
+    private EpisodeJournal journal;
 
     @Option(names = "--csv", paramLabel = "FILE", description = "write one row per loop (height, flip) or test (box) as CSV")
     Path csv;
@@ -146,11 +159,25 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "with .png)")
     Path plot;
 
+    @Option(names = "--export", paramLabel = "FILE",
+            description = "with --episodes 1 (box: --tests 1): also write the episode's animation (FILE.glb, FILE.gltf or FILE.bvh; see export)")
+    Path export;
+
+    /** The episode's animation export, or null. */
+    private RunExport exported;
+
     @Override
     public Integer call() throws Exception {
         loops = loopsOption != null ? loopsOption
                 : copies != null ? SENSITIVITY_DEFAULT_LOOPS : task.equals("flip") ? FLIP_DEFAULT_LOOPS : HEIGHT_DEFAULT_LOOPS;
         validate();
+        if (json != null) {
+            journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature());
+            if (journal.finished() > 0) {
+                System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
+                        journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
+            }
+        }
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
         Function<ThrowTask, ThrowPolicy> policies = throwPolicies();
@@ -177,11 +204,77 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
+        if (exported != null) {
+            exported.write("handsim evaluate: " + task + " task, " + object + ", " + controllerLabel() + " controller, seed " + seed);
+        }
+        if (journal != null) {
+            out.put("episodes_resumed", journal.finished() - newlyFinished);
+        }
+        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs()));
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);
+            journal.delete();
         }
         return 0;
+    }
+
+    /** Episodes this run finished itself (the journal's others were read back). */
+    private int newlyFinished;
+
+    /**
+     * What makes this run's episodes what they are: the options that change a result (not
+     * --workers, --episodes or --tests: more episodes of the same run keep the first ones) and
+     * the SHA-256 of every file under configs/ and models/ and of --policy and --goals.
+     */
+    private com.fasterxml.jackson.databind.node.ObjectNode signature() throws IOException {
+        ObjectNode s = JsonNodeFactory.instance.objectNode();
+        s.put("task", task).put("controller", controller).put("plan", plan).put("object", object).put("loops", loops).put("seed", seed);
+        s.put("policy", controller.equals("learned") ? policyFile().toAbsolutePath().normalize().toString() : null);
+        s.put("throw_height", throwHeight);
+        s.put("copies", copies);
+        s.put("nudge", copies != null ? nudge : null);
+        ObjectNode files = s.putObject("files");
+        java.util.SortedMap<String, String> hashes = new java.util.TreeMap<>();
+        for (String dir : List.of("configs", "models")) {
+            try (var walk = Files.walk(Home.resolve(dir))) {
+                for (Path f : walk.filter(Files::isRegularFile).toList()) {
+                    hashes.put(Home.root().relativize(f).toString(), handsim.config.ReadLog.sha256(Files.readAllBytes(f)));
+                }
+            }
+        }
+        for (Path f : java.util.Arrays.asList(controller.equals("learned") ? policyFile() : null, goals)) {
+            if (f != null && Files.isRegularFile(f)) {
+                hashes.put(f.toAbsolutePath().normalize().toString(), handsim.config.ReadLog.sha256(Files.readAllBytes(f)));
+            }
+        }
+        hashes.forEach(files::put);
+        return s;
+    }
+
+    /**
+     * {@code task} that reads an episode back from the journal when an interrupted run of the same command finished it,
+     * and otherwise runs it and journals its result at once (without --json, {@code task} itself).
+     */
+    private <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        if (journal == null) {
+            return task;
+        }
+        return sim -> {
+            RolloutTask.Rollout<R> rollout = task.prepare(sim);
+            return i -> {
+                java.util.Optional<JsonNode> earlier = journal.result(i);
+                if (earlier.isPresent()) {
+                    return read.apply(earlier.get());
+                }
+                R result = rollout.run(i);
+                journal.append(i, write.apply(result));
+                synchronized (this) {
+                    newlyFinished++;
+                }
+                return result;
+            };
+        };
     }
 
     private void validate() {
@@ -232,6 +325,10 @@ final class EvaluateCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
+        if (export != null && (episodes != 1 || copies != null || task.equals("box") && tests != 1)) {
+            throw new IllegalArgumentException("--export goes with one episode: --episodes 1 (box: --tests 1), without --copies");
+        }
+        exported = RunExport.to(export);
         if (plot == null && json != null) {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
@@ -274,7 +371,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */
     private CatchEvaluation evaluation(ThrowTask t, Function<ThrowTask, ThrowPolicy> policies, ControllerConfig cc,
             ObjectSpec spec) {
-        return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t));
+        return new CatchEvaluation(cc, Runtime.episodeLimits(), Runtime.launches(), spec, t, policies.apply(t)).watchedBy(exported);
     }
 
     /** The heights of --goals, or null. */
@@ -297,10 +394,10 @@ final class EvaluateCommand implements Callable<Integer> {
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
         // episode i has seed --seed + i on whichever worker runs it; printed in seed order
-        List<EpisodeResult> results = rollouts.run(episodes, sim -> {
+        List<EpisodeResult> results = rollouts.run(episodes, resumable(sim -> {
             CatchEvaluation evaluation = evaluation(tasks.height(heightGoals(heightList)), policies, cc, spec);
             return i -> evaluation.run(sim, seed + i, loops, longEpisodeProgress());
-        }, (i, r) -> {
+        }, ResultJson::episode, ResultJson::episode), (i, r) -> {
             for (LoopRecord loop : r.loops()) {
                 System.out.printf(Locale.ROOT, "episode %d loop %3d: %-7s apex %s%s  penetration %.1f mm  limit excess %.2f deg"
                         + "  torque %.2f%n", r.seed(), loop.index(), loop.caught() ? "caught" : "DROPPED",
@@ -340,10 +437,10 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("peak_torque_ratio", r.peakTorqueRatio());
         }
         System.out.printf(Locale.ROOT, "%s, %s controller, %d episodes: first catch %.0f %%, loops completed %d (mean %.2f), "
-                + "drops %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
+                + "drops %d, loops out of time %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
                 + "max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f%n", object, controller, episodes,
                 100 * out.get("first_catch_rate").asDouble(), out.get("loops_completed").asInt(),
-                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), errors.count(), errors.mean(),
+                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), out.get("time_outs").asInt(), errors.count(), errors.mean(),
                 errors.absMean(), errors.absP95(), 100 * errors.within(0.1), out.get("max_limit_excess_deg").asDouble(),
                 out.get("max_penetration_mm").asDouble(), out.get("peak_torque_ratio").asDouble());
         writeCsv(rows);
@@ -384,6 +481,7 @@ final class EvaluateCommand implements Callable<Integer> {
         s.put("loops_attempted", results.stream().mapToInt(EpisodeResult::loopsAttempted).sum());
         s.put("loops_completed", results.stream().mapToInt(EpisodeResult::loopsCompleted).sum());
         s.put("drops", results.stream().mapToInt(EpisodeResult::drops).sum());
+        s.put("time_outs", results.stream().mapToInt(EpisodeResult::timeOuts).sum());
         s.put("first_catch", results.stream().allMatch(EpisodeResult::firstCatch));
         s.put("first_catches", results.stream().filter(EpisodeResult::firstCatch).count());
         s.put("first_catch_rate", results.stream().filter(EpisodeResult::firstCatch).count() / (double) n);
@@ -413,11 +511,11 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
-        List<BoxTests.Test> results = rollouts.run(boxes.size(), sim -> {
+        List<BoxTests.Test> results = rollouts.run(boxes.size(), resumable(sim -> {
             BoxTask t = (BoxTask) tasks.create("box", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return i -> BoxTests.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
-        }, (i, r) -> {
+        }, ResultJson::boxTest, ResultJson::boxTest), (i, r) -> {
             System.out.printf(Locale.ROOT, "test %3d: box (%.3f, %.3f, %.3f), %.3f m from the centre: %s (%d in a row)%n",
                     r.index(), r.box().x(), r.box().y(), r.box().z(), r.distance(), r.success() ? "success" : "failure", r.inARow());
             rows.append(String.format(Locale.ROOT, "%d,%d,%.4f,%.4f,%.4f,%.4f,%s,%d%n", r.index(), r.seed(), r.box().x(),
@@ -454,10 +552,8 @@ final class EvaluateCommand implements Callable<Integer> {
         }
     }
 
-    /** The planner's settings and work over all workers, printed and in the JSON. */
-    private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, List<CatchEvaluation> planned) {
-        ThrowPlanner.Stats s = planned.stream().map(CatchEvaluation::plannerStats).reduce(ThrowPlanner.Stats.NONE,
-                ThrowPlanner.Stats::plus);
+    /** The planner's settings and its work over all episodes, printed and in the JSON. */
+    private static void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, ThrowPlanner.Stats s) {
         ObjectNode o = out.putObject("planner");
         ArrayNode rounds = o.putArray("rounds");
         planning.rounds().forEach(r -> putStyles(rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread())
@@ -502,32 +598,51 @@ final class EvaluateCommand implements Callable<Integer> {
 
     // ---- flip -----------------------------------------------------------------------------
 
+    /** How a flip episode ended: its last throw dropped, caught standing, caught lying without a flip, or the cap reached. */
+    enum FlipEnd {
+        DROPPED, CAUGHT_STANDING, NO_FLIP, REACHED_MAX_LOOPS;
+
+        /** The name in the JSON and CSV. */
+        String label() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
     /**
-     * A flip episode's outcome: loops in a row that flipped and were caught properly, flips made,
-     * and how it ended: in a drop, with the object caught but not lying in the hand, or with a
-     * throw that did not flip.
+     * A flip episode's outcome: loops in a row that flipped and were caught properly, the flips
+     * those successful throws made, how it ended, and the planner's work in it (with --plan).
      */
-    private record FlipRun(long seed, int inARow, int flips, int throwsMade, boolean dropped, boolean tilted, List<LoopRecord> loops) {
+    private record FlipRun(long seed, int inARow, int flips, int throwsMade, FlipEnd end, List<LoopRecord> loops,
+            ThrowPlanner.Stats planner) {
 
-        /** How the episode ended, for its progress line; {@code maxLoops} is --loops. */
-        String ending(String object, int maxLoops) {
-            if (dropped) {
-                return "ended in a drop";
+        /**
+         * The episode of {@code made}, the loops up to and including its first failure (or the cap),
+         * with what the planner did in it.
+         */
+        static FlipRun of(long seed, List<LoopRecord> made, ThrowPlanner.Stats planner, FlipTask task, int maxLoops) {
+            int inARow = 0, flips = 0;
+            for (LoopRecord r : made) {
+                if (r.index() > 0 && task.success(r)) {
+                    inARow++;
+                    flips += task.flips(r);
+                }
             }
-            if (tilted) {
-                return String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
+            LoopRecord last = made.get(made.size() - 1);
+            FlipEnd end = inARow >= maxLoops ? FlipEnd.REACHED_MAX_LOOPS
+                    : !last.caught() ? FlipEnd.DROPPED
+                    : last.index() > 0 && !task.properCatch(last) ? FlipEnd.CAUGHT_STANDING : FlipEnd.NO_FLIP;
+            return new FlipRun(seed, inARow, flips, made.size() - 1, end, made, planner);
+        }
+
+        /** How the episode ended, for its progress line. */
+        String ending(String object) {
+            return switch (end) {
+                case DROPPED -> "ended in a drop";
+                case CAUGHT_STANDING -> String.format(Locale.ROOT, "ended with the %s caught standing %.0f deg out of the palm", object,
                         Math.toDegrees(loops.get(loops.size() - 1).catchTilt()));
-            }
-            return reachedLimit(maxLoops) ? "reached --loops" : "ended with a throw that did not flip";
-        }
-
-        boolean reachedLimit(int maxLoops) {
-            return inARow >= maxLoops;
-        }
-
-        /** Ended with a throw that was caught lying in the hand but did not flip. */
-        boolean unflipped(int maxLoops) {
-            return !dropped && !tilted && !reachedLimit(maxLoops);
+                case NO_FLIP -> "ended with a throw that did not flip";
+                case REACHED_MAX_LOOPS -> "reached --loops";
+            };
         }
     }
 
@@ -537,40 +652,42 @@ final class EvaluateCommand implements Callable<Integer> {
         Tasks tasks = Runtime.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
         ThrowPlanner.Config planning = plan ? Runtime.plannerConfig(object) : null;
-        List<CatchEvaluation> planned = Collections.synchronizedList(new ArrayList<>());
         List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
         List<FlipRun> runs;
         try {
-            runs = rollouts.run(episodes, sim -> {
-            FlipTask t = (FlipTask) tasks.create("flip", object);
-            CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
-            if (planning != null) {
-                Simulator twin = Runtime.twinSimulator(sim);
-                twins.add(twin);
-                evaluation = evaluation.planned(planning, twin);
-                planned.add(evaluation);
-            }
-            CatchEvaluation worker = evaluation;
-            return i -> {
-                // planned episodes take minutes each (the club's up to an hour): say how far they are
-                CatchEvaluation.LoopListener progress = planning == null ? longEpisodeProgress() : (episodeSeed, loop) -> {
-                    if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
-                        System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
-                    }
+            runs = rollouts.run(episodes, resumable(sim -> {
+                FlipTask t = (FlipTask) tasks.create("flip", object);
+                CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
+                if (planning != null) {
+                    Simulator twin = Runtime.twinSimulator(sim);
+                    twins.add(twin);
+                    evaluation = evaluation.planned(planning, twin);
+                }
+                CatchEvaluation worker = evaluation;
+                return i -> {
+                    // planned episodes take minutes each (the club's up to an hour): say how far they are
+                    CatchEvaluation.LoopListener progress = planning == null ? longEpisodeProgress() : (episodeSeed, loop) -> {
+                        if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
+                            System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
+                        }
+                    };
+                    List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops, progress);
+                    return FlipRun.of(seed + i, made, worker.episodePlannerStats(), flipTask, loops);
                 };
-                List<LoopRecord> made = worker.runWhileSuccessful(sim, seed + i, loops, progress);
-                int flips = made.stream().mapToInt(t::flips).sum();
-                LoopRecord last = made.get(made.size() - 1);
-                return new FlipRun(seed + i, worker.successesInARow(made), flips, made.size() - 1, !last.caught(),
-                        last.index() > 0 && last.caught() && !t.properCatch(last), made);
-            };
-            }, (i, r) -> System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n",
-                    r.seed(), r.inARow(), r.flips(), r.throwsMade(), r.ending(object, loops)));
+            }, r -> {
+                ObjectNode o = JsonNodeFactory.instance.objectNode().put("seed", r.seed());
+                o.set("loops", ResultJson.loops(r.loops()));
+                o.set("planner", ResultJson.plannerStats(r.planner()));
+                return o;
+            }, o -> FlipRun.of(o.get("seed").asLong(), ResultJson.loops(o.get("loops")), ResultJson.plannerStats(o.get("planner")),
+                    flipTask, loops)), (i, r) -> System.out.printf(Locale.ROOT,
+                    "episode %d: %d flip-and-catch loops in a row, %d flips in %d throws, %s%n", r.seed(), r.inARow(), r.flips(),
+                    r.throwsMade(), r.ending(object)));
         } finally {
             twins.forEach(Simulator::close);
         }
         if (planning != null) {
-            putPlannerStats(out, planning, planned);
+            putPlannerStats(out, planning, runs.stream().map(FlipRun::planner).reduce(ThrowPlanner.Stats.NONE, ThrowPlanner.Stats::plus));
         }
         if (csv != null) {
             StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
@@ -595,9 +712,10 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("loops_completed_max", runs.stream().mapToInt(FlipRun::inARow).max().orElse(0));
         out.put("flips", runs.stream().mapToInt(FlipRun::flips).sum());
         out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
-        out.put("drops", runs.stream().filter(FlipRun::dropped).count());
-        out.put("tilted_catches", runs.stream().filter(FlipRun::tilted).count());
-        out.put("unflipped_endings", runs.stream().filter(r -> r.unflipped(loops)).count());
+        ObjectNode endings = out.putObject("endings");
+        for (FlipEnd end : FlipEnd.values()) {
+            endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
+        }
         List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
         List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
@@ -616,14 +734,13 @@ final class EvaluateCommand implements Callable<Integer> {
             o.put("loops_completed", r.inARow());
             o.put("flips", r.flips());
             o.put("throws", r.throwsMade());
-            o.put("dropped", r.dropped());
-            o.put("tilted_catch", r.tilted());
+            o.put("end", r.end().label());
         }
         System.out.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
-                + "(min %d, max %d, at most %d); %d flips in %d throws; ended by %d drops, %d catches not lying in the hand, "
+                + "(min %d, max %d, at most %d); %d flips by the successful throws, %d throws; ended by %d drops, %d catches not lying in the hand, "
                 + "%d throws that did not flip%n", controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
-                out.get("drops").asInt(), out.get("tilted_catches").asInt(), out.get("unflipped_endings").asInt());
+                endings.get("dropped").asInt(), endings.get("caught_standing").asInt(), endings.get("no_flip").asInt());
         System.out.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -728,11 +845,11 @@ final class EvaluateCommand implements Callable<Integer> {
         List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
         List<List<LoopRecord>> copiesDone = new ArrayList<>();
         ArrayNode eps = out.putArray("episodes");
-        rollouts.run(episodes * copies, sim -> {
+        rollouts.run(episodes * copies, resumable(sim -> {
             ThrowTask t = task.equals("height") ? tasks.height(heightGoals(heightList)) : tasks.create(task, object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
             return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
-        }, (j, loopsOfCopy) -> {
+        }, ResultJson::loops, ResultJson::loops), (j, loopsOfCopy) -> {
             copiesDone.add(loopsOfCopy);
             if (copiesDone.size() == copies) {
                 List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(copiesDone);

@@ -31,7 +31,8 @@ final class InfoCommand implements Callable<Integer> {
     @Option(names = "--json", paramLabel = "FILE", description = "also write the information as JSON")
     Path json;
 
-    @Option(names = "--pose", paramLabel = "NAME", description = "also give world positions of the bodies and shapes in this pose (neutral, open, closed)")
+    @Option(names = "--pose", paramLabel = "NAME", description = "also give world positions of the bodies and shapes in this pose (neutral, open, closed; "
+            + "zero: every angle 0, the model's rest configuration)")
     String pose;
 
     @Override
@@ -100,10 +101,15 @@ final class InfoCommand implements Callable<Integer> {
         return out;
     }
 
+    /** The pose name of the model's rest configuration, every angle 0 (where BVH's zero frame puts the joints). */
+    static final String ZERO_POSE = "zero";
+
     /** World geometry of the model in a named pose: body frames and capsule end points. */
     static ObjectNode posed(HandModel m, String poseName) {
-        double[] q = m.poseVector("neutral");
-        m.pose(poseName).applyTo(q);
+        double[] q = poseName.equals(ZERO_POSE) ? new double[m.dofCount()] : m.poseVector("neutral");
+        if (!poseName.equals(ZERO_POSE)) {
+            m.pose(poseName).applyTo(q);
+        }
         Frame[] frames = new Kinematics(m).forward(q);
         ObjectNode out = JsonNodeFactory.instance.objectNode();
         out.put("name", poseName);

@@ -5,10 +5,23 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.concurrent.TimeUnit;
 
-/** Where a result came from: the git commit of the working tree (and whether it had changes). */
+/**
+ * Where a result came from: the git commit of the working tree (and whether it had changes),
+ * the command line, and every config, model and policy file read with its SHA-256.
+ */
 final class Provenance {
 
     private Provenance() {
+    }
+
+    /** The provenance of a result made by {@code scripts/handsim ARGS...}, after its inputs were read. */
+    static com.fasterxml.jackson.databind.node.ObjectNode of(java.util.List<String> args) {
+        var o = com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode();
+        o.put("commit", gitCommit());
+        o.put("command", "scripts/handsim " + String.join(" ", args));
+        var files = o.putObject("files");
+        handsim.config.ReadLog.files().forEach(files::put);
+        return o;
     }
 
     /** {@code <commit>} or {@code <commit>+changes}; {@code unknown} without git or outside a repository. */

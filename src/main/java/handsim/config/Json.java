@@ -42,16 +42,21 @@ public final class Json {
 
     /** Parses a file; syntax errors name the file, line and column. */
     public static Json load(Path file) {
-        String text;
+        byte[] bytes;
         try {
-            text = Files.readString(file);
+            bytes = Files.readAllBytes(file);
         } catch (java.nio.file.NoSuchFileException e) {
             throw new ConfigException(file + ": no such file");
-        } catch (java.nio.charset.MalformedInputException e) {
-            throw new ConfigException(file + ": not a JSON text file (it is not UTF-8)");
         } catch (IOException e) {
             String reason = e instanceof java.nio.file.FileSystemException f && f.getReason() != null ? f.getReason() : e.getMessage();
             throw new ConfigException(file + ": cannot read it (" + (Files.isDirectory(file) ? "a folder" : reason) + ")", e);
+        }
+        ReadLog.record(file, bytes);
+        String text;
+        try {
+            text = java.nio.charset.StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new ConfigException(file + ": not a JSON text file (it is not UTF-8)");
         }
         return parse(file.toString(), text);
     }

@@ -153,7 +153,7 @@ public final class CatchPlanner {
      * y is up, as in {@link Ballistics}) to lie flat under the long axis: {@code fallingTilt}
      * for an object falling straight down, growing linearly with the arrival's horizontal part
      * to a quarter turn for one arriving level. A tumbling object coming down onto a level palm
-     * settles on it, a tilted palm lets it slide off (measured, README); an object arriving from
+     * settles on it, a tilted palm lets it slide off (docs/experiments.md, "Catch"); an object arriving from
      * the side is met flat.
      */
     static double tiltLimit(Vec3 back, double fallingTilt) {

@@ -10,7 +10,7 @@ import handsim.sim.RigidState;
  * fixed duration (handsim's extension of sec. 3.6 for flips; off unless a task asks for it).
  * A can gains most of its end-over-end spin in the last few tens of milliseconds of the paper's
  * THROW, as the fingers open and the palm stops, and by how much varies from throw to throw
- * (README, flip section). So the controller watches the object: THROW ends, and GOBACK's palm
+ * (docs/experiments.md, "Throw"). So the controller watches the object: THROW ends, and GOBACK's palm
  * falls away and lets go, once the predicted turn reaches {@code turn}; a throw still short of it
  * at the end of THROW goes on (the palm at its end velocity, turning on at its rate) for at most
  * {@code extension}.

@@ -228,7 +228,7 @@ public final class Trainer {
         return runRound(player, listener, Integer.MAX_VALUE);
     }
 
-    /** A round of at most {@code maxEpisodes} episodes (a session ending before the run's budget). */
+    /** A round of at most {@code maxEpisodes} episodes (train --session-episodes stopping before the run's budget). */
     public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener, int maxEpisodes) {
         int k = (int) Math.min(Math.min(config.training().parallelEpisodes(), maxEpisodes),
                 Math.max(1, config.training().episodes() - episodes));

@@ -27,6 +27,15 @@ public final class CatchEvaluation {
         void onLoop(long seed, LoopRecord loop);
     }
 
+    /**
+     * Told after every tick with the simulator: a watcher (an animation export) reads the world
+     * and never changes it.
+     */
+    @FunctionalInterface
+    public interface TickWatcher {
+        void afterTick(Simulator sim);
+    }
+
     private final ControllerConfig controllerConfig;
     private final EpisodeLimits limits;
     private final LaunchDistribution launches;
@@ -43,6 +52,7 @@ public final class CatchEvaluation {
     private ChosenThrow liveThrow;
     /** The index of the loop whose throw was planned last (checked against the twin's when it ends). */
     private int plannedLoop = -1;
+    private TickWatcher watcher;
 
     /** {@code throwPolicy} chooses the throws for {@code task}'s goals. */
     public CatchEvaluation(ControllerConfig controllerConfig, EpisodeLimits limits, LaunchDistribution launches,
@@ -72,7 +82,14 @@ public final class CatchEvaluation {
         CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
         e.planning = config;
         e.twin = twin;
+        e.watcher = watcher;
         return e;
+    }
+
+    /** This evaluation with {@code w} told after every tick of its episodes (null: none). */
+    public CatchEvaluation watchedBy(TickWatcher w) {
+        watcher = w;
+        return this;
     }
 
     /** Whether every throw is chosen by a planner ({@link #planned}). */
@@ -83,6 +100,11 @@ public final class CatchEvaluation {
     /** What the planner did over every episode so far (zeros without planning). */
     public ThrowPlanner.Stats plannerStats() {
         return planner == null ? earlierEpisodes : earlierEpisodes.plus(planner.stats());
+    }
+
+    /** What the planner did in the running episode, or the last one (zeros without planning). */
+    public ThrowPlanner.Stats episodePlannerStats() {
+        return planner == null ? ThrowPlanner.Stats.NONE : planner.stats();
     }
 
     /** The task whose goals the throws aim at (its episode state is shared by every episode this evaluation starts). */
@@ -124,6 +146,14 @@ public final class CatchEvaluation {
      * be replayed.
      */
     public LoopRecord tick(CatchThrowEpisode episode, long seed) {
+        LoopRecord r = tickOnce(episode, seed);
+        if (watcher != null) {
+            watcher.afterTick(episode.sim());
+        }
+        return r;
+    }
+
+    private LoopRecord tickOnce(CatchThrowEpisode episode, long seed) {
         try {
             if (planner == null) {
                 return episode.tick();

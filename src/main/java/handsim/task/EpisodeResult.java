@@ -36,8 +36,14 @@ public record EpisodeResult(long seed, List<LoopRecord> loops, CatchThrowEpisode
         return n;
     }
 
+    /** 1 if the episode ended with the object dropped, else 0. */
     public int drops() {
         return status == CatchThrowEpisode.Status.DROPPED ? 1 : 0;
+    }
+
+    /** 1 if the episode ended with a loop that ran out of time (configs/episode.json maxLoopSeconds), else 0. */
+    public int timeOuts() {
+        return status == CatchThrowEpisode.Status.TIME_LIMIT ? 1 : 0;
     }
 
     /** Largest joint-limit excursion of the episode (rad). */

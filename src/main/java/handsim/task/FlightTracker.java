@@ -6,8 +6,10 @@ import handsim.math.Vec3;
 /**
  * One throw's flight, followed tick by tick: from the release (the last tick with a hand
  * contact while the object still rises) to the catch (the first contact once it comes down),
- * how far the object's long axis turned end over end in between ({@link EndOverEnd#turn}), and
- * how fast it was turning so as it left the hand ({@link EndOverEnd#rate}).
+ * the net end-over-end turn of the object's long axis in between (the tick-by-tick turns summed
+ * as rotation vectors, {@link EndOverEnd#step}, of which the horizontal part counts,
+ * {@link EndOverEnd#net}), and how fast it was turning so as it left the hand
+ * ({@link EndOverEnd#rate}).
  * A touch on the way up, when the still-rising hand meets the object again, is part of the
  * throw: the flight begins after it. Engine-free, so the flip criterion is tested on scripted
  * flights.
@@ -20,7 +22,8 @@ final class FlightTracker {
     private final Vec3 up;
     private Stage stage = Stage.BEFORE_RELEASE;
     private Vec3 lastAxis;
-    private double rotation;
+    /** The summed rotation vector of the long axis's turns in flight (rad). */
+    private Vec3 turn = Vec3.ZERO;
     private double releaseSpin = Double.NaN;
     private Vec3 catchPoint;
     private double arrivalTilt = Double.NaN;
@@ -38,7 +41,7 @@ final class FlightTracker {
         up = o.up;
         stage = o.stage;
         lastAxis = o.lastAxis;
-        rotation = o.rotation;
+        turn = o.turn;
         releaseSpin = o.releaseSpin;
         catchPoint = o.catchPoint;
         arrivalTilt = o.arrivalTilt;
@@ -48,7 +51,7 @@ final class FlightTracker {
     void reset() {
         stage = Stage.BEFORE_RELEASE;
         lastAxis = null;
-        rotation = 0;
+        turn = Vec3.ZERO;
         releaseSpin = Double.NaN;
         catchPoint = null;
         arrivalTilt = Double.NaN;
@@ -67,7 +70,7 @@ final class FlightTracker {
             case BEFORE_RELEASE -> {
                 if (!touching && throwBegun) {
                     stage = Stage.FLYING;
-                    rotation = 0;
+                    turn = Vec3.ZERO;
                     lastAxis = axis;
                     releaseSpin = axis == null ? Double.NaN : EndOverEnd.rate(angularVelocity, axis, up);
                 }
@@ -82,7 +85,7 @@ final class FlightTracker {
                         arrivalTilt = axis == null ? Double.NaN : Math.asin(Math.min(1, Math.abs(axis.dot(up))));
                     }
                 } else if (axis != null) {
-                    rotation += EndOverEnd.turn(lastAxis, axis, up);
+                    turn = turn.plus(EndOverEnd.step(lastAxis, axis));
                     lastAxis = axis;
                 }
             }
@@ -92,9 +95,9 @@ final class FlightTracker {
         }
     }
 
-    /** The end-over-end turn of the long axis in flight so far (rad; 0 before the release). */
+    /** The net end-over-end turn of the long axis in flight so far (rad; 0 before the release). */
     double rotation() {
-        return rotation;
+        return EndOverEnd.net(turn, up);
     }
 
     /**

@@ -16,12 +16,11 @@ import java.util.Map;
 import java.util.Optional;
 
 /**
- * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from how far
- * the object's long axis turned end over end in flight ({@link LoopRecord#flightRotation},
- * accumulated from the release, the last hand contact on the way up, to the catch, the first
- * contact on the way down, by {@link FlightTracker}; turning about the vertical, a
- * flat spin, does not count): {@code flips = floor((rotation + tolerance) /
- * flipAngle)}, with flipAngle half a turn for a can (end for end is the same can) and a whole
+ * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from the net
+ * end-over-end turn of the object's long axis in flight ({@link LoopRecord#flightRotation}, from
+ * the release, the last hand contact on the way up, to the catch, the first contact on the way
+ * down, by {@link FlightTracker}; turning about the vertical, a flat spin, and a wobble do not
+ * count): {@code flips = floor((rotation + tolerance) / flipAngle)}, with flipAngle half a turn for a can (end for end is the same can) and a whole
  * turn for a club (the handle comes back to the hand). A flip must be caught properly: held in
  * the hand when MIDDLE ends and lying in it, its long axis at most {@code maxCatchTilt} out of
  * the palm's plane ({@link LoopRecord#catchTilt}; a can standing on end in the palm is no catch

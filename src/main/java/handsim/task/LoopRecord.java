@@ -16,10 +16,10 @@ import handsim.math.Vec3;
  * @param boxHit the object touched a static box (the box task's target) during the loop
  * @param boxDistance least distance between the object and a static box during the loop (m;
  *     0 when it touched one, NaN when there is no box)
- * @param flightRotation how far the object's long axis turned end over end (about horizontal
- *     axes; a flat propeller spin does not count) while the object flew free of the hand, from
- *     the release of the throw to the first touch of the catch (rad, accumulated over the flight,
- *     so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
+ * @param flightRotation the net end-over-end turn of the object's long axis (about a horizontal
+ *     axis; a flat propeller spin and a wobble add nothing, a turn and its way back cancel) while
+ *     the object flew free of the hand, from the release of the throw to the first touch of the
+ *     catch (rad, so two turns read 4 pi; NaN for loop 0 and for objects without a long axis)
  * @param releaseSpin how fast the long axis turned end over end as the object left the hand
  *     (rad/s, the same weighting; NaN as for flightRotation): the flight's turn is about this
  *     rate times the flight's duration

@@ -31,10 +31,10 @@ import java.util.SplittableRandom;
  * from the state it leads to succeeds too (no dead end; that throw is then tried first at the next
  * decision, so the search there cannot miss it); then, among successes, when the long
  * object lies across the palm, along the palm's z axis (where the next throw succeeds most often;
- * docs/flip-experiments.md, twelfth session); among failures, by the task's reward. The search
+ * docs/experiments.md, "Planner"); among failures, by the task's reward. The search
  * stops at the first such success lying across within {@code goodAlignment}; when none of a
  * round's tries was one, the next round goes on with its own spread (an object may have rounds of
- * its own: the club's are many and narrow, docs/flip-experiments.md, eighteenth session).
+ * its own: the club's are many and narrow, docs/experiments.md, "Planner").
  *
  * <p>Before an episode's first tick the planner may likewise choose how the hand catches the
  * throw-in ({@link #chooseThrowInCatch}): only the catch, the launch is the episode's.
@@ -72,7 +72,7 @@ public final class ThrowPlanner {
      *     throw; a round after the first begins only when no earlier try was a success leading on
      * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
      * @param lookahead throws tried at most from a successful try's next state (the policy's, then
-     *     variations by the first round's spread; the first that succeeds is tried first when the live
+     *     variations by the spread of round 1; the first that succeeds is tried first when the live
      *     hand reaches that state); the try counts as a dead end when none succeeds;
      *     0: no lookahead
      * @param catchStyles how the catch after a tried throw meets the object, in turn: a decision's
@@ -462,7 +462,7 @@ public final class ThrowPlanner {
     /**
      * From the twin's state now (a successful try's next decision), a throw that succeeds and
      * leads on {@code depth - 1} throws further, or null: {@code hint} first when it was found from
-     * this very state, then the policy's throw and variations by the first round's spread, up to
+     * this very state, then the policy's throw and variations by the spread of round 1, up to
      * {@code lookahead} in all.
      */
     private Continuation continuation(ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {

@@ -7,10 +7,11 @@ import handsim.task.LoopRecord;
  * A training-only reward term for flips, added to eq. (7): {@code weight exp(-((s - target) /
  * width)^2)} for a throw whose object left the hand turning end over end at {@code s} rad/s
  * ({@link LoopRecord#releaseSpin}). Eq. (7) pays only for the outcome, which goes with the
- * release spin (README: the shipped can policy's throws leaving at 7-9 rad/s were flipped and
- * caught lying in the hand 105 times in 108, at 0-3 rad/s never); this term tells the critic
- * which way a failed throw missed. Tried once (weight 0.5, target 8, width 2) it did not help
- * (README). Evaluation still counts flip-and-catch loops; {@link #NONE} is the paper's reward.
+ * release spin (docs/experiments.md: the shipped can policy's throws leaving at 7-9 rad/s were
+ * flipped and caught lying in the hand 105 times in 108, at 0-3 rad/s never); this term tells
+ * the critic which way a failed throw missed. With weight 0.5, target 8 and width 2 it did not
+ * help (docs/experiments.md, "Learner"). Evaluation still counts flip-and-catch loops;
+ * {@link #NONE} is the paper's reward.
  *
  * @param weight at most this much is added (0: none)
  * @param target the release spin paid most (rad/s)

@@ -293,7 +293,7 @@ public final class TrainRun {
     /**
      * Trains until the configured number of episodes or until {@code sessionEpisodes} more
      * episodes have been played (whichever comes first), then checkpoints: a long run can be
-     * split over several sessions with {@link #resume}.
+     * split over several invocations of train with {@link #resume}.
      */
     public void run(PrintStream out, long sessionEpisodes) throws IOException {
         long budget = Math.min(config.learner().training().episodes(),

@@ -5,8 +5,10 @@ import static org.lwjgl.opengl.GL11.*;
 import handsim.kin.Frame;
 import handsim.math.Quat;
 import handsim.math.Vec3;
+import handsim.mesh.Detail;
+import handsim.mesh.ShapeMeshes;
+import handsim.mesh.Surface;
 import handsim.model.Body;
-import handsim.model.Shape;
 import handsim.sim.WorldSnapshot;
 import handsim.task.Goal;
 import java.util.List;
@@ -16,67 +18,34 @@ import java.util.List;
  * renderer): a checkered floor, planar shadows of every shape, shaded capsules, cylinders,
  * boxes and spheres for the arm, the hand (the palm's collision shapes in their own tone), the
  * object and static boxes; then, on request, the task's goal, the object's trail and the joint
- * axes. Needs a current OpenGL context; unit meshes and the floor are built once into display
- * lists, and shadows use coarser meshes than the bodies.
+ * axes. Needs a current OpenGL context. The shapes are the triangle meshes of {@link ShapeMeshes}
+ * (the ones the animation export writes), built once into display lists; shadows use coarser
+ * meshes than the bodies.
  */
 public final class SceneRenderer implements AutoCloseable {
 
-    /** Mesh detail: slices around, stacks per hemisphere; finger-sized shapes and shadows need less. */
-    static final int SLICES = 20, HEMI_STACKS = 6, SMALL_SLICES = 12, SMALL_HEMI_STACKS = 4, SHADOW_SLICES = 10,
-            SHADOW_HEMI_STACKS = 3;
-    /** Round shapes thinner than this radius (m: the fingers) get the smaller mesh: a few pixels wide on screen. */
-    static final double SMALL_RADIUS = 0.015;
     static final double SHADOW_LIFT = 5e-4, GOAL_OUTLINE_WIDTH = 2;
-    private static final String PALM_BODY = "palm";
 
     private final ViewerConfig.Palette colours;
     private final ViewerConfig.Stage stage;
     private final ViewerConfig.Overlays overlays;
     private final double planeHalfSize;
-    private final Mesh fine;
-    private final Mesh small;
-    private final Mesh coarse;
+    /** The shapes' meshes as the bodies are drawn, and the coarser ones of the shadows. */
+    private final MeshLists fine = new MeshLists(Detail.FINE);
+    private final MeshLists coarse = new MeshLists(Detail.SHADOW);
+    /** The box from -1 to 1 on every axis: static and goal boxes are it scaled. */
+    private final int cube;
     private final int floorList;
     private double floorHeight = Double.NaN;
     private JointAxes axes;
-
-    /** Unit meshes of one level of detail, each a display list. */
-    private record Mesh(int sphere, int hemisphere, int tube, int cylinder, int cube) {
-        static Mesh build(int slices, int hemiStacks) {
-            int base = glGenLists(5);
-            Mesh m = new Mesh(base, base + 1, base + 2, base + 3, base + 4);
-            glNewList(m.sphere, GL_COMPILE);
-            buildSphereBand(slices, -hemiStacks, hemiStacks, hemiStacks);
-            glEndList();
-            glNewList(m.hemisphere, GL_COMPILE);
-            buildSphereBand(slices, -hemiStacks, 0, hemiStacks);
-            glEndList();
-            glNewList(m.tube, GL_COMPILE);
-            buildTube(slices);
-            glEndList();
-            glNewList(m.cylinder, GL_COMPILE);
-            buildTube(slices);
-            buildCaps(slices);
-            glEndList();
-            glNewList(m.cube, GL_COMPILE);
-            buildCube();
-            glEndList();
-            return m;
-        }
-
-        void delete() {
-            glDeleteLists(sphere, 5);
-        }
-    }
 
     public SceneRenderer(ViewerConfig config) {
         this.colours = config.colours();
         this.stage = config.stage();
         this.overlays = config.overlays();
         this.planeHalfSize = config.goals().planeHalfSize();
-        fine = Mesh.build(SLICES, HEMI_STACKS);
-        small = Mesh.build(SMALL_SLICES, SMALL_HEMI_STACKS);
-        coarse = Mesh.build(SHADOW_SLICES, SHADOW_HEMI_STACKS);
+        cube = glGenLists(1);
+        MeshLists.compile(cube, ShapeMeshes.box(Vec3.ZERO, new Vec3(2, 2, 2)));
         floorList = glGenLists(1);
     }
 
@@ -121,16 +90,16 @@ public final class SceneRenderer implements AutoCloseable {
         glEnable(GL_LIGHTING);
         List<Body> bodies = s.model().bodies();
         for (int i = 0; i < bodies.size(); i++) {
-            color(bodies.get(i).name().equals(PALM_BODY) ? colours.palm() : colours.skin());
-            drawShapes(s.bodies().get(i), bodies.get(i).shapes(), fine);
+            color(Surface.of(bodies.get(i)) == Surface.PALM ? colours.palm() : colours.skin());
+            drawAt(s.bodies().get(i), fine.body(s.model(), i));
         }
         if (s.object().isPresent() && s.objectSpec().isPresent()) {
             color(colours.object());
             var o = s.object().get();
-            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes(), fine);
+            drawAt(new Frame(o.position(), o.orientation()), fine.object(s.objectSpec().get().shapes()));
         }
         for (WorldSnapshot.StaticBox b : s.boxes()) {
-            drawBox(b.center(), b.size(), colours.staticBox(), fine);
+            drawBox(b.center(), b.size(), colours.staticBox());
         }
     }
 
@@ -139,7 +108,7 @@ public final class SceneRenderer implements AutoCloseable {
         if (goal instanceof Goal.Height h) {
             drawGoalPlane(h.height(), h.center(), planeHalfSize, colours.goalPlane());
         } else if (goal instanceof Goal.Box b) {
-            drawBox(b.center(), b.size(), colours.goalBox(), fine);
+            drawBox(b.center(), b.size(), colours.goalBox());
         }
     }
 
@@ -210,7 +179,7 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /** An axis-aligned box (centre, full size); translucent if alpha < 1. */
-    private void drawBox(Vec3 center, Vec3 size, float[] rgba, Mesh mesh) {
+    private void drawBox(Vec3 center, Vec3 size, float[] rgba) {
         boolean translucent = rgba[3] < 1;
         glEnable(GL_LIGHTING);
         if (translucent) {
@@ -222,7 +191,7 @@ public final class SceneRenderer implements AutoCloseable {
         glPushMatrix();
         glTranslated(center.x(), center.y(), center.z());
         glScaled(size.x() / 2, size.y() / 2, size.z() / 2);
-        glCallList(mesh.cube);
+        glCallList(cube);
         glPopMatrix();
         if (translucent) {
             glDepthMask(true);
@@ -234,51 +203,10 @@ public final class SceneRenderer implements AutoCloseable {
         glColor4f(c[0], c[1], c[2], c[3]);
     }
 
-    private void drawShapes(Frame frame, List<Shape> shapes, Mesh mesh) {
+    /** Calls display list {@code list} in {@code frame}. */
+    private static void drawAt(Frame frame, int list) {
         glPushMatrix();
         multiply(frame.origin(), frame.rotation());
-        for (Shape shape : shapes) {
-            drawShape(shape, mesh);
-        }
-        glPopMatrix();
-    }
-
-    private void drawShape(Shape shape, Mesh detail) {
-        Mesh mesh = detail == fine && radius(shape) < SMALL_RADIUS ? small : detail;
-        if (shape instanceof Shape.Sphere sp) {
-            drawScaled(sp.center(), Quat.IDENTITY, sp.radius(), sp.radius(), sp.radius(), mesh.sphere);
-        } else if (shape instanceof Shape.Box b) {
-            drawScaled(b.center(), b.rotation(), b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, mesh.cube);
-        } else if (shape instanceof Shape.Cylinder c) {
-            Vec3 d = c.b().minus(c.a());
-            drawScaled(c.a(), Quat.between(Vec3.Z, d.normalized()), c.radius(), c.radius(), d.norm(), mesh.cylinder);
-        } else if (shape instanceof Shape.Capsule c) {
-            // an open tube from a to b (unit mesh along +z) closed by two hemispheres facing outward
-            Vec3 d = c.b().minus(c.a());
-            Quat along = Quat.between(Vec3.Z, d.normalized());
-            double r = c.radius();
-            drawScaled(c.a(), along, r, r, d.norm(), mesh.tube);
-            drawScaled(c.a(), along, r, r, r, mesh.hemisphere);
-            drawScaled(c.b(), along.mul(Quat.fromAxisAngle(Vec3.X, Math.PI)), r, r, r, mesh.hemisphere);
-        }
-    }
-
-    /** The radius of a round shape; boxes count as large. */
-    private static double radius(Shape shape) {
-        if (shape instanceof Shape.Sphere sp) {
-            return sp.radius();
-        } else if (shape instanceof Shape.Capsule c) {
-            return c.radius();
-        } else if (shape instanceof Shape.Cylinder c) {
-            return c.radius();
-        }
-        return Double.POSITIVE_INFINITY;
-    }
-
-    private void drawScaled(Vec3 at, Quat rotation, double sx, double sy, double sz, int list) {
-        glPushMatrix();
-        multiply(at, rotation);
-        glScaled(sx, sy, sz);
         glCallList(list);
         glPopMatrix();
     }
@@ -300,16 +228,19 @@ public final class SceneRenderer implements AutoCloseable {
         glPushMatrix();
         glMultMatrixf(m);
         color(colours.shadow());
-        List<Body> bodies = s.model().bodies();
-        for (int i = 0; i < bodies.size(); i++) {
-            drawShapes(s.bodies().get(i), bodies.get(i).shapes(), coarse);
+        for (int i = 0; i < s.model().bodyCount(); i++) {
+            drawAt(s.bodies().get(i), coarse.body(s.model(), i));
         }
         if (s.object().isPresent() && s.objectSpec().isPresent()) {
             var o = s.object().get();
-            drawShapes(new Frame(o.position(), o.orientation()), s.objectSpec().get().shapes(), coarse);
+            drawAt(new Frame(o.position(), o.orientation()), coarse.object(s.objectSpec().get().shapes()));
         }
         for (WorldSnapshot.StaticBox b : s.boxes()) {
-            drawScaled(b.center(), Quat.IDENTITY, b.size().x() / 2, b.size().y() / 2, b.size().z() / 2, coarse.cube);
+            glPushMatrix();
+            glTranslated(b.center().x(), b.center().y(), b.center().z());
+            glScaled(b.size().x() / 2, b.size().y() / 2, b.size().z() / 2);
+            glCallList(cube);
+            glPopMatrix();
         }
         glPopMatrix();
         glDisable(GL_STENCIL_TEST);
@@ -325,24 +256,18 @@ public final class SceneRenderer implements AutoCloseable {
         glCallList(floorList);
     }
 
+    /** The checkered floor at height y: the tiles of each colour as {@link ShapeMeshes#checker} lays them out. */
     private void buildFloor(double y) {
         floorHeight = y;
-        double tile = stage.floorTile();
-        int n = (int) Math.round(stage.floorHalfSize() / tile);
         glNewList(floorList, GL_COMPILE);
-        glBegin(GL_QUADS);
-        for (int i = -n; i < n; i++) {
-            for (int k = -n; k < n; k++) {
-                float[] c = ((i + k) & 1) == 0 ? colours.floorLight() : colours.floorDark();
-                glColor3f(c[0], c[1], c[2]);
-                double x0 = i * tile, z0 = k * tile;
-                glVertex3d(x0, y, z0);
-                glVertex3d(x0, y, z0 + tile);
-                glVertex3d(x0 + tile, y, z0 + tile);
-                glVertex3d(x0 + tile, y, z0);
-            }
+        glPushMatrix();
+        glTranslated(0, y, 0);
+        for (boolean even : new boolean[] {true, false}) {
+            float[] c = even ? colours.floorLight() : colours.floorDark();
+            glColor3f(c[0], c[1], c[2]);
+            MeshLists.draw(ShapeMeshes.checker(stage.floorHalfSize(), stage.floorTile(), even));
         }
-        glEnd();
+        glPopMatrix();
         glEndList();
     }
 
@@ -355,74 +280,11 @@ public final class SceneRenderer implements AutoCloseable {
             t.x(), t.y(), t.z(), 1});
     }
 
-    /** Latitude bands of the unit sphere from stack {@code from} to {@code to}, {@code perHemi} stacks per hemisphere (z up). */
-    private static void buildSphereBand(int slices, int from, int to, int perHemi) {
-        for (int i = from; i < to; i++) {
-            double t0 = Math.PI / 2 * i / perHemi, t1 = Math.PI / 2 * (i + 1) / perHemi;
-            glBegin(GL_QUAD_STRIP);
-            for (int j = 0; j <= slices; j++) {
-                double p = 2 * Math.PI * j / slices;
-                for (double t : new double[] {t1, t0}) {
-                    double nx = Math.cos(t) * Math.cos(p), ny = Math.cos(t) * Math.sin(p), nz = Math.sin(t);
-                    glNormal3d(nx, ny, nz);
-                    glVertex3d(nx, ny, nz);
-                }
-            }
-            glEnd();
-        }
-    }
-
-    /** The side of the unit cylinder from z = 0 to z = 1. */
-    private static void buildTube(int slices) {
-        glBegin(GL_QUAD_STRIP);
-        for (int j = 0; j <= slices; j++) {
-            double p = 2 * Math.PI * j / slices, c = Math.cos(p), s = Math.sin(p);
-            glNormal3d(c, s, 0);
-            glVertex3d(c, s, 1);
-            glVertex3d(c, s, 0);
-        }
-        glEnd();
-    }
-
-    private static void buildCaps(int slices) {
-        for (int cap = 0; cap < 2; cap++) {
-            glBegin(GL_TRIANGLE_FAN);
-            glNormal3d(0, 0, cap == 0 ? -1 : 1);
-            glVertex3d(0, 0, cap);
-            for (int j = 0; j <= slices; j++) {
-                double p = 2 * Math.PI * (cap == 0 ? j : slices - j) / slices;
-                glVertex3d(Math.cos(p), Math.sin(p), cap);
-            }
-            glEnd();
-        }
-    }
-
-    private static void buildCube() {
-        glBegin(GL_QUADS);
-        int[][] faces = {{0, 1}, {0, -1}, {1, 1}, {1, -1}, {2, 1}, {2, -1}};
-        for (int[] f : faces) {
-            double[] n = new double[3];
-            n[f[0]] = f[1];
-            glNormal3d(n[0], n[1], n[2]);
-            int u = (f[0] + 1) % 3, v = (f[0] + 2) % 3;
-            double[][] corners = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-            for (int c = 0; c < 4; c++) {
-                int idx = f[1] > 0 ? c : 3 - c;
-                double[] p = new double[3];
-                p[f[0]] = f[1];
-                p[u] = corners[idx][0];
-                p[v] = corners[idx][1];
-                glVertex3d(p[0], p[1], p[2]);
-            }
-        }
-        glEnd();
-    }
-
     @Override
     public void close() {
-        fine.delete();
-        small.delete();
-        coarse.delete();
+        fine.close();
+        coarse.close();
+        glDeleteLists(cube, 1);
         glDeleteLists(floorList, 1);
     }
 }

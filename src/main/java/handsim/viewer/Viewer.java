@@ -54,6 +54,10 @@ public final class Viewer implements AutoCloseable {
     private LiveFrame drawn;
     private FrameFolder recording;
     private double nextRecordTime;
+    private GltfRecording gltf;
+    /** Writes a finished glTF recording off the drawing thread; null when none is being written. */
+    private Thread gltfWriter;
+    private final String title;
     private double fps = Double.NaN;
     private double clock;
 
@@ -65,6 +69,7 @@ public final class Viewer implements AutoCloseable {
         this.config = config;
         this.run = run;
         this.pictures = pictures;
+        this.title = title;
         window = new GlWindow(config.window().width(), config.window().height(), title, true);
         glfwSwapInterval(vsync ? 1 : 0);
         renderer = new SceneRenderer(config);
@@ -167,7 +172,9 @@ public final class Viewer implements AutoCloseable {
         if (controls.axes) {
             renderer.drawJointAxes(f.snapshot());
         }
-        String rec = recording == null ? null : recording.count() + " frames → " + recording.dir().getFileName();
+        String frames = recording == null ? null : recording.count() + " frames → " + recording.dir().getFileName();
+        String samples = gltf == null ? null : gltf.samples() + " glTF samples → " + gltf.file().getFileName();
+        String rec = frames == null ? samples : samples == null ? frames : frames + ", " + samples;
         hud.draw(size[0], size[1], () -> Hud.rows(f, fps, rec), controls.help, clock);
         drawn = f;
     }
@@ -184,6 +191,53 @@ public final class Viewer implements AutoCloseable {
         }
         if (recording != null) {
             record(f.snapshot().time());
+        }
+        if (controls.gltfToggleRequested) {
+            controls.gltfToggleRequested = false;
+            toggleGltf();
+        }
+        if (gltf != null) {
+            gltf.offer(f);
+        }
+    }
+
+    /** Starts a glTF recording, or stops the one running and writes it on a thread of its own. */
+    private void toggleGltf() {
+        if (gltf == null) {
+            try {
+                gltf = new GltfRecording(pictures.resolve("recording__" + LocalDateTime.now().format(STAMP) + ".glb"), config, camera,
+                        title);
+                run.report("recording glTF into " + shortPath(gltf.file()));
+            } catch (IllegalArgumentException e) {
+                run.report("glTF recording failed: " + e.getMessage());
+            }
+            return;
+        }
+        GltfRecording done = gltf;
+        gltf = null;
+        finishGltfWriter();
+        gltfWriter = new Thread(() -> writeGltf(done), "gltf-writer");
+        gltfWriter.start();
+    }
+
+    private void writeGltf(GltfRecording done) {
+        try {
+            run.report(done.write() ? "recorded " + done.samples() + " glTF samples into " + shortPath(done.file())
+                    : "glTF recording too short (fewer than two samples): nothing written");
+        } catch (IOException | RuntimeException e) {
+            run.report("glTF recording failed: " + e.getMessage());
+        }
+    }
+
+    /** Waits for a glTF file still being written. */
+    private void finishGltfWriter() {
+        if (gltfWriter != null) {
+            try {
+                gltfWriter.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            gltfWriter = null;
         }
     }
 
@@ -264,6 +318,11 @@ public final class Viewer implements AutoCloseable {
         return camera;
     }
 
+    /** What the keys do (tests press them here). */
+    ViewerControls controls() {
+        return controls;
+    }
+
     /** The drawable size in pixels. */
     public int[] size() {
         return window.framebufferSize();
@@ -274,9 +333,14 @@ public final class Viewer implements AutoCloseable {
         return glGetString(GL_RENDERER);
     }
 
-    /** Finishes a recording in progress and closes the window (the run is the caller's). */
+    /** Finishes the recordings in progress and closes the window (the run is the caller's). */
     @Override
     public void close() {
+        if (gltf != null) {
+            writeGltf(gltf);
+            gltf = null;
+        }
+        finishGltfWriter();
         if (recording != null) {
             try {
                 recording.close();

@@ -30,6 +30,7 @@ enum ViewerAction {
     TRAIL(GLFW_KEY_P, "P", "object's path (trail)"),
     AXES(GLFW_KEY_J, "J", "joint axes"),
     RECORD(GLFW_KEY_M, "M", "start / stop recording PNG frames"),
+    RECORD_GLTF(GLFW_KEY_G, "G", "start / stop recording the animation as glTF (.glb)"),
     SCREENSHOT(GLFW_KEY_I, "I", "screenshot (PNG)"),
     QUIT(GLFW_KEY_ESCAPE, "Esc", "quit");
 

@@ -54,8 +54,11 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benc
     public record Hud(int fontSizePixels, double noteSeconds) {
     }
 
-    /** Frames are recorded every 1/fps simulated seconds into a new folder under {@code folder}. */
-    public record Recording(int fps, String folder) {
+    /**
+     * Frames are recorded every 1/fps simulated seconds into a new folder under {@code folder}; a
+     * glTF recording samples the world {@code gltfRate} times a simulated second into a file there.
+     */
+    public record Recording(int fps, double gltfRate, String folder) {
     }
 
     /** RGBA colours in [0, 1]; {@code axes} colours the first, second and third DOF of a joint. */
@@ -121,7 +124,7 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benc
         Hud hud = new Hud(h.integer("fontSizePixels", 6, 96), h.number("noteSeconds", 0.1, 600));
         Json r = j.get("recording");
         r.allow("comment");
-        Recording recording = new Recording(r.integer("fps", 1, 240), r.string("folder"));
+        Recording recording = new Recording(r.integer("fps", 1, 240), r.number("gltfRate", 1, 240), r.string("folder"));
         Json k = j.get("colours");
         List<float[]> axes = new java.util.ArrayList<>();
         for (Json a : k.array("axes")) {

@@ -8,7 +8,7 @@ import java.util.List;
 /**
  * What the keyboard and the mouse do, without a window: GLFW's events go in, and out come
  * camera moves, commands to the {@link LiveRun}, overlay switches and requests the viewer
- * carries out after drawing (screenshot, recording, quit). Mouse: left drag orbits, right drag
+ * carries out after drawing (screenshot, recording frames or glTF, quit). Mouse: left drag orbits, right drag
  * (or shift + left) pans, middle drag and the wheel zoom.
  */
 final class ViewerControls {
@@ -25,6 +25,7 @@ final class ViewerControls {
     boolean axes;
     boolean screenshotRequested;
     boolean recordToggleRequested;
+    boolean gltfToggleRequested;
     boolean quitRequested;
     private int speedIndex;
     private boolean paused;
@@ -74,6 +75,7 @@ final class ViewerControls {
             case TRAIL -> trail = !trail;
             case AXES -> axes = !axes;
             case RECORD -> recordToggleRequested = true;
+            case RECORD_GLTF -> gltfToggleRequested = true;
             case SCREENSHOT -> screenshotRequested = true;
             case QUIT -> quitRequested = true;
             default -> throw new IllegalStateException("unhandled viewer action " + a);

@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 /** Damped least squares IK (eq. 2) on the shipped model, with the shipped IK settings. */
 class DlsIkTest {
 
-    /** Issue 3: reachable palm targets are reached within 1 mm and 1 degree. */
+    /** Reachable palm targets are reached within 1 mm and 1 degree. */
     static final double POSITION_TOLERANCE = 1e-3;
     static final double ROTATION_TOLERANCE = Math.toRadians(1);
     /** Enough iterations for the damped steps to converge from neutral (the controller warm-starts 2 per tick). */

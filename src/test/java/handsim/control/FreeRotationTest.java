@@ -48,7 +48,7 @@ class FreeRotationTest {
         Vec3 lAfter = s.orientation().rotate(Inertia.diagonal(transverse, axial, transverse)
                 .times(s.orientation().inverseRotate(s.angularVelocity())));
         assertEquals(0, lAfter.distance(l), 1e-9, "angular momentum conserved");
-        // turning the axis by the whole angular velocity would miss it by far (the old prediction)
+        // turning the axis by the whole angular velocity would miss it by far (a constant-angular-velocity prediction)
         double naiveMiss = Quat.fromRotationVector(w0.times(t)).rotate(axis0).distance(expected);
         assertTrue(naiveMiss > 0.5, "constant-w prediction misses by " + naiveMiss);
     }

@@ -42,7 +42,7 @@ class CatchLoopTest {
      */
     static final double PALM_TOLERANCE = 1e-3;
     static final double OBJECT_TOLERANCE = 1e-3;
-    /** Issue 3's natural-motion bounds. */
+    /** Natural motion: joint limits exceeded by at most 2 degrees, penetration at most 5 mm. */
     static final double MAX_LIMIT_EXCESS = Math.toRadians(2);
     static final double MAX_PENETRATION = 0.005;
 
@@ -71,6 +71,8 @@ class CatchLoopTest {
         Path golden = Home.root().resolve(GOLDEN);
         if (Boolean.getBoolean("handsim.regenerateGolden")) {
             Files.writeString(golden, "time,phase,palm_x,palm_y,palm_z,object_x,object_y,object_z\n" + String.join("\n", rows) + "\n");
+            // a file compared with what was just written to it proves nothing: the run that records reports skipped
+            org.junit.jupiter.api.Assumptions.abort("golden loop re-recorded to " + GOLDEN + ", not compared: review its diff");
         }
         List<String> expected = Files.readAllLines(golden);
         assertEquals(expected.size() - 1, rows.size(), "golden rows (regenerate with scripts/regenerate-golden)");
@@ -86,8 +88,9 @@ class CatchLoopTest {
     /**
      * Long objects, five seeded launches each (seeds 1000-1004 of configs/launch.json): at least
      * four caught on the first arrival. A regression guard for the grasps and the heading search,
-     * not the benchmark: over 100 launches the shipped configs catch 100 % of cans, 98 % of
-     * cuboids and 90 % of clubs (README), and before them 12 %, 32 % and 0 %.
+     * not the benchmark: over 100 launches the shipped configs catch 98 % of cans, 98 % of
+     * cuboids and 87 % of clubs (docs/results.md), the paper's open and closed poses 12 %, 32 %
+     * and 0 % (docs/design.md).
      */
     @ParameterizedTest
     @ValueSource(strings = {"can", "cuboid", "club"})

@@ -29,9 +29,9 @@ class ShippedPoliciesTest {
 
     /**
      * The shipped height policy, 20 throws to seeded random goals in 1.0-1.4 m (seed 7, the
-     * acceptance seed of README's 320-loop evaluation, which dropped nothing): every throw is
-     * caught, and the mean |apex - goal| stays within 3 cm (the evaluation measured ~1 cm; the
-     * nominal throw's table gives ~1.5 cm, so 3 cm catches a policy that no longer aims).
+     * test seed of the 320-loop evaluation in docs/results.md, which dropped nothing): every
+     * throw is caught, and the mean |apex - goal| stays within 3 cm (the evaluation measured 1.42 cm; the
+     * nominal throw's table gives ~1.5 cm, so 3 cm catches a policy that does not aim).
      */
     @Test
     void theHeightPolicyCatchesTwentyThrowsInARowNearTheirGoals() {
@@ -48,11 +48,11 @@ class ShippedPoliciesTest {
 
     /**
      * The shipped can-flip policy completes 10 flip-and-catch loops in a row (each flip caught lying
-     * in the hand) from the throw-in of seed 130 (issue 7's regression guard). The seed is the
-     * one of seeds 101-140 on which {@code evaluate --task flip --object can --controller learned}
-     * made the most loops in a row (12, with the analytic cylinder contacts of the thirteenth
-     * session; seed 106 made 13 with libccd's): a guard that the policy, physics and controller
-     * still do what they did, not a measure of the policy (its means are in the README).
+     * in the hand) from the throw-in of seed 130 (the can policy's regression guard). The seed is
+     * the one of seeds 101-140 on which {@code evaluate --task flip --object can --controller
+     * learned} made the most loops in a row (12, with the analytic cylinder contacts): a guard
+     * that the policy, physics and controller still do what they did, not a measure of the policy
+     * (its means are in docs/results.md).
      */
     @Test
     void theCanFlipPolicyFlipsAndCatchesTenTimesInARowOnItsSeed() {

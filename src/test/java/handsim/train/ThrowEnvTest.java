@@ -54,7 +54,7 @@ class ThrowEnvTest {
             double goal = s[StateVector.Encoding.PAPER.baseSize()];
             Env.Step step = env.step(cc.throwSpace().toAction(cc.nominalThrows().forHeight(goal)));
             assertFalse(step.terminal(), "the hand-tuned throw is caught");
-            // eq. (5) for a catch: exp(-10 |apex - goal|), in (0, 1]; the nominal lands within 5 cm (README)
+            // eq. (5) for a catch: exp(-10 |apex - goal|), in (0, 1]; the nominal lands within 5 cm (docs/results.md)
             assertTrue(step.reward() > Math.exp(-10 * 0.05) && step.reward() <= 1, "reward " + step.reward());
         }
     }

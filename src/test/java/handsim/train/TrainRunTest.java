@@ -66,7 +66,7 @@ class TrainRunTest {
                     .put("command", "scripts/handsim train --config tiny.json").put("commit", "0123abc");
             TrainRun.start(whole, tinyConfig(), envs(), r, started).run(quiet);
             TrainRun.start(split, tinyConfig(), envs(), r, started).run(quiet, 2);
-            assertEquals(2, MetricsCsv.read(split.resolve(TrainRun.METRICS)).size(), "the first session stopped after 2 episodes");
+            assertEquals(2, MetricsCsv.read(split.resolve(TrainRun.METRICS)).size(), "the first invocation stopped after 2 episodes");
             TrainRun.resume(split, envs(), r).run(quiet);
         }
         for (String f : List.of("config.json", "run.json", "metrics.csv", "checkpoint.zip", "policy.json", "learning.png",
@@ -127,7 +127,7 @@ class TrainRunTest {
     }
 
     /**
-     * {@code train --init-actor POLICY.json} (issue 7's "DATASET_OR_ACTOR"): the run's actor starts
+     * {@code train --init-actor POLICY.json} (its DATASET_OR_ACTOR): the run's actor starts
      * as the shipped height policy, acting as it does up to round-off (1e-9: the same weights,
      * float arithmetic in another order), and the policy is copied into the run. A policy of
      * another task, or a config without {@code pretrain.policyObservations}, is refused before

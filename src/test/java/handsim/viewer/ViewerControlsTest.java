@@ -113,6 +113,8 @@ class ViewerControlsTest {
         assertTrue(controls.screenshotRequested);
         press(GLFW_KEY_M);
         assertTrue(controls.recordToggleRequested);
+        press(GLFW_KEY_G);
+        assertTrue(controls.gltfToggleRequested);
         press(GLFW_KEY_ESCAPE);
         assertTrue(controls.quitRequested);
         assertTrue(scene.commands.isEmpty(), "none of these is the scene's business");

@@ -15,8 +15,8 @@ import org.ode4j.ode.DGeom;
  *
  * <p>Why: ode4j has no analytic cylinder-capsule collider; with libccd it takes the single
  * penetration point of libccd's MPR search, which jumps as the can rocks on a finger and turns
- * round-off into degrees of the can's turn within two catches (README, "Why the loops do not
- * last"). Here the contact is a continuous function of the two poses: the capsule's axis
+ * round-off into degrees of the can's turn within two catches (docs/experiments.md,
+ * "Contacts"). Here the contact is a continuous function of the two poses: the capsule's axis
  * segment p(s) = c + s u, |s| <= l/2, is searched for the point nearest the cylinder, where the
  * signed distance f(s) = sdf(p(s)) is smallest; f is convex (the cylinder is), so its slope
  * f'(s) = grad sdf . u only rises along the segment and bisection on its sign finds the minimum

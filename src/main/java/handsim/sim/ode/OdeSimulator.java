@@ -87,9 +87,9 @@ public final class OdeSimulator implements Simulator {
      * upper arm and forearm under 50), and an unpowered arm falling onto its joint limits whips
      * its palm to about 1,300 rad/s (upper arm and forearm about 300). An arm driven into its
      * shoulder's Euler singularity spun its upper arm past 2,000 rad/s with nothing touching it,
-     * 70 ms before it flung the can away at 78 m/s (docs/flip-experiments.md, fifteenth
-     * session). Finger phalanges (3-30 g) are left out: unpowered, they flop against their limits
-     * at over 1,000 rad/s.
+     * 70 ms before it flung the can away at 78 m/s (docs/experiments.md, "Catch"). Finger
+     * phalanges (3-30 g) are left out: unpowered, they flop against their limits at over
+     * 1,000 rad/s.
      */
     static final double DIVERGED_SPIN = 2000;
 

@@ -1,0 +1,393 @@
+package handsim.cards.study;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.cards.tpe.CompletedTrial;
+import handsim.cards.tpe.Direction;
+import handsim.cards.tpe.Pareto;
+import handsim.cards.tpe.TpeSampler;
+import handsim.config.ConfigException;
+import handsim.config.Json;
+import java.io.FileOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.SplittableRandom;
+import java.util.TreeMap;
+import java.util.TreeSet;
+import java.util.concurrent.CompletionService;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorCompletionService;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+/**
+ * A TPE study of an {@link Objective} over a {@link StudyConfig}'s search space, kept in a
+ * folder:
+ * <pre>
+ * study.json               config, seed, sampler, the provenance of every run
+ * trials/trial-0007.json   one file per finished trial, written atomically
+ * best.json                the best trial (one objective) or the Pareto front (several)
+ * history.png              objective per trial and best so far (thesis Fig. 4.9);
+ *                          history-NAME.png per objective when there are several
+ * </pre>
+ *
+ * <p><b>Determinism.</b> Trial k's parameters depend on the seed, k and the trials numbered
+ * 0 … k - P only (P = {@code parallelTrials} of the config):
+ * <ul>
+ *   <li>its random generator is seeded from the seed and k alone (the (k+1)-th long of a
+ *       {@link SplittableRandom} seeded with the study's seed);</li>
+ *   <li>it is suggested once every trial numbered 0 … k - P has finished, from those of them
+ *       that completed, never from a later one that happens to have finished.</li>
+ * </ul>
+ * Trials start in number order on up to {@code workers} threads, at most P at a time. So the
+ * study's trials are the same for any number of workers, and a study resumed after a kill
+ * continues exactly as if it had never stopped: finished trials are read back bit for bit, and
+ * a trial that was running is run again with the same parameters. P = 1 is Optuna's sequential
+ * study; P &gt; 1 is Optuna with P parallel jobs in the case where each trial misses the P - 1
+ * before it, fixed so that timing cannot change the result.
+ */
+public final class Study {
+
+    public static final String STUDY_FILE = "study.json";
+    public static final String TRIALS_DIR = "trials";
+    public static final String BEST_FILE = "best.json";
+    private static final Pattern TRIAL_FILE = Pattern.compile("trial-(\\d+)\\.json");
+    private static final String FORMAT = "handsim cards study 1";
+
+    private final Path dir;
+    private final StudyConfig config;
+    private final long seed;
+    private final TpeSampler sampler;
+    private final ObjectNode studyJson;
+    /** Finished trials (complete or failed) by number. */
+    private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
+
+    private Study(Path dir, StudyConfig config, long seed, ObjectNode studyJson) {
+        this.dir = dir;
+        this.config = config;
+        this.seed = seed;
+        this.sampler = new TpeSampler(config.params(), config.directions(), config.sampler());
+        this.studyJson = studyJson;
+    }
+
+    /**
+     * Opens the study in {@code dir} to run it: creates it when the folder has no study.json,
+     * resumes it otherwise, which requires the same config and seed (else a
+     * {@link ConfigException} naming the field). {@code provenance} (command line, commit, ...)
+     * is recorded in study.json for this run.
+     */
+    public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode provenance) throws IOException {
+        Path file = dir.resolve(STUDY_FILE);
+        Study study;
+        if (Files.exists(file)) {
+            study = open(dir);
+            if (study.seed != seed) {
+                throw new ConfigException(file + ": seed: the study was created with seed " + study.seed + ", not " + seed);
+            }
+            String difference = firstDifference(study.config.toJson(), config.toJson(), "config");
+            if (difference != null) {
+                throw new ConfigException(file + ": " + difference + " (a study resumes only with the config it was created with)");
+            }
+        } else {
+            ObjectNode json = Json.mapper().createObjectNode();
+            json.put("format", FORMAT);
+            json.put("seed", seed);
+            json.set("config", config.toJson());
+            json.set("sampler", samplerDescription(config));
+            json.putArray("runs");
+            study = new Study(dir, config, seed, json);
+        }
+        ObjectNode run = ((ArrayNode) study.studyJson.get("runs")).addObject();
+        run.put("finishedBefore", study.finished.size());
+        run.set("provenance", provenance.deepCopy());
+        writeJson(file, study.studyJson);
+        return study;
+    }
+
+    /** Reads an existing study (its config, seed and finished trials) without running it. */
+    public static Study open(Path dir) throws IOException {
+        Path file = dir.resolve(STUDY_FILE);
+        Json json = Json.load(file);
+        String format = json.string("format");
+        if (!format.equals(FORMAT)) {
+            throw json.fieldError("format", "expected \"" + FORMAT + "\", got \"" + format + "\"");
+        }
+        StudyConfig config = StudyConfig.fromJson(file + " config", json.get("config").node());
+        Study study = new Study(dir, config, json.longValue("seed"), (ObjectNode) json.node().deepCopy());
+        Path trials = dir.resolve(TRIALS_DIR);
+        if (Files.isDirectory(trials)) {
+            try (Stream<Path> files = Files.list(trials)) {
+                for (Path f : (Iterable<Path>) files.sorted()::iterator) {
+                    Matcher m = TRIAL_FILE.matcher(f.getFileName().toString());
+                    if (m.matches()) { // anything else (a temporary file left by a kill) is ignored
+                        TrialRecord t = TrialRecord.fromJson(Json.load(f), config);
+                        if (t.number() != Integer.parseInt(m.group(1))) {
+                            throw new ConfigException(f + ": number: " + t.number() + " does not match the file name");
+                        }
+                        study.finished.put(t.number(), t);
+                    }
+                }
+            }
+        }
+        return study;
+    }
+
+    private static ObjectNode samplerDescription(StudyConfig config) {
+        ObjectNode s = Json.mapper().createObjectNode();
+        s.put("algorithm", config.multiObjective() ? "MOTPE (Ozaki et al. 2020)" : "TPE (Bergstra et al. 2011)");
+        s.put("semantics", "Optuna 3.6.1 TPESampler, independent sampling (multivariate=False)");
+        s.put("gamma", "min(ceil(0.1 n), 25)");
+        s.put("weights", "1 below 25 trials; the oldest n - 25 ramp from 1/n to 1");
+        s.put("trialRandom", "trial k: SplittableRandom seeded with the (k+1)-th nextLong of SplittableRandom(seed)");
+        s.put("history", "trial k is suggested from the completed trials numbered <= k - parallelTrials");
+        return s;
+    }
+
+    public Path dir() {
+        return dir;
+    }
+
+    public StudyConfig config() {
+        return config;
+    }
+
+    public long seed() {
+        return seed;
+    }
+
+    /** The finished trials (complete and failed), in number order. */
+    public List<TrialRecord> trials() {
+        return List.copyOf(finished.values());
+    }
+
+    /** The complete trial of best value, the earliest of equals (one objective). */
+    public Optional<TrialRecord> best() {
+        if (config.multiObjective()) {
+            throw new IllegalStateException("a study of " + config.objectives().size() + " objectives has a Pareto front, not one best trial");
+        }
+        Direction d = config.directions().get(0);
+        return finished.values().stream().filter(TrialRecord::isComplete)
+                .min(Comparator.comparingDouble((TrialRecord t) -> d == Direction.MAXIMIZE ? -t.values()[0] : t.values()[0]));
+    }
+
+    /** The complete trials no other one dominates, in number order. */
+    public List<TrialRecord> paretoFront() {
+        List<CompletedTrial> complete = finished.values().stream().filter(TrialRecord::isComplete).map(TrialRecord::toCompleted).toList();
+        return Pareto.front(complete, config.directions()).stream().map(t -> finished.get(t.number())).toList();
+    }
+
+    /**
+     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads,
+     * with a progress line per finished trial on {@code progress} (null for none). Writes each
+     * trial's file as it finishes, best.json after each, the history plots at the end. If the
+     * calling thread is interrupted, the running trials are abandoned (they run again on
+     * resume), the report is written and InterruptedException is thrown.
+     */
+    public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
+        if (nTrials < 1) {
+            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
+        }
+        if (workers < 1) {
+            throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
+        }
+        Progress log = new Progress(progress, this, nTrials);
+        log.start(workers);
+        ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
+            Thread t = new Thread(r, "study-worker");
+            t.setDaemon(true);
+            return t;
+        });
+        CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
+        TreeSet<Integer> running = new TreeSet<>();
+        try {
+            TrialRecord last = null;
+            while (true) {
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers; k = nextToStart(nTrials, running)) {
+                    double[] params = suggest(k);
+                    int number = k;
+                    running.add(k);
+                    done.submit(() -> evaluate(objective, number, params));
+                }
+                if (last != null) {
+                    log.finished(last, running.size());
+                }
+                if (running.isEmpty()) {
+                    break;
+                }
+                last = result(done);
+                running.remove(last.number());
+                finished.put(last.number(), last);
+                writeJson(trialFile(last.number()), last.toJson(config));
+                writeBest();
+            }
+        } finally {
+            pool.shutdownNow();
+            writeReport();
+        }
+        log.end();
+    }
+
+    /** The lowest trial number not finished and not running, if every trial it waits for has finished; else -1. */
+    private int nextToStart(int nTrials, TreeSet<Integer> running) {
+        int k = 0;
+        while (k < nTrials && (finished.containsKey(k) || running.contains(k))) {
+            k++;
+        }
+        return k < nTrials && allFinishedThrough(k - config.parallelTrials()) ? k : -1;
+    }
+
+    private boolean allFinishedThrough(int last) {
+        for (int j = 0; j <= last; j++) {
+            if (!finished.containsKey(j)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Trial k's parameters, from the completed trials numbered <= k - parallelTrials and trial k's own generator. */
+    double[] suggest(int k) {
+        List<CompletedTrial> history = new ArrayList<>();
+        for (TrialRecord t : finished.headMap(k - config.parallelTrials(), true).values()) {
+            if (t.isComplete()) {
+                history.add(t.toCompleted());
+            }
+        }
+        return sampler.suggest(history, trialRandom(seed, k));
+    }
+
+    /** Trial k's generator: seeded with the (k+1)-th long of SplittableRandom(seed), so it depends on (seed, k) only. */
+    static SplittableRandom trialRandom(long seed, int k) {
+        SplittableRandom root = new SplittableRandom(seed);
+        long s = 0;
+        for (int i = 0; i <= k; i++) {
+            s = root.nextLong();
+        }
+        return new SplittableRandom(s);
+    }
+
+    private TrialRecord evaluate(Objective objective, int number, double[] x) {
+        long t0 = System.nanoTime();
+        Evaluation e;
+        try {
+            e = objective.evaluate(TrialParams.of(number, config, x));
+        } catch (Exception ex) {
+            return TrialRecord.failed(number, x, ex.toString(), (System.nanoTime() - t0) * 1e-9);
+        }
+        double seconds = (System.nanoTime() - t0) * 1e-9;
+        double[] values = e.values();
+        if (values.length != config.objectives().size()) {
+            throw new IllegalStateException("the objective returned " + values.length + " values for the study's " + config.objectives().size()
+                    + " objectives " + config.objectives());
+        }
+        for (int i = 0; i < values.length; i++) {
+            if (!Double.isFinite(values[i])) {
+                return TrialRecord.failed(number, x, config.objectives().get(i) + " is " + values[i], seconds);
+            }
+        }
+        return TrialRecord.complete(number, x, e, seconds);
+    }
+
+    private static TrialRecord result(CompletionService<TrialRecord> done) throws InterruptedException {
+        try {
+            return done.take().get();
+        } catch (ExecutionException e) {
+            Throwable cause = e.getCause();
+            if (cause instanceof RuntimeException r) {
+                throw r;
+            }
+            if (cause instanceof Error err) {
+                throw err;
+            }
+            throw new IllegalStateException(cause);
+        }
+    }
+
+    private Path trialFile(int number) {
+        return dir.resolve(TRIALS_DIR).resolve(String.format(Locale.ROOT, "trial-%04d.json", number));
+    }
+
+    /** best.json and the history plots. */
+    public void writeReport() throws IOException {
+        writeBest();
+        HistoryPlot.write(this);
+    }
+
+    private void writeBest() throws IOException {
+        ObjectNode root = Json.mapper().createObjectNode();
+        root.put("finished", finished.size());
+        root.put("complete", finished.values().stream().filter(TrialRecord::isComplete).count());
+        if (config.multiObjective()) {
+            ArrayNode front = root.putArray("paretoFront");
+            for (TrialRecord t : paretoFront()) {
+                front.add(t.toJson(config));
+            }
+        } else {
+            best().ifPresent(t -> root.set("best", t.toJson(config)));
+        }
+        writeJson(dir.resolve(BEST_FILE), root);
+    }
+
+    /**
+     * Writes a JSON file atomically (a temporary file moved into place) with plain streams, which,
+     * unlike NIO channels, an interrupt of the writing thread does not break off.
+     */
+    private static void writeJson(Path file, JsonNode node) throws IOException {
+        Path abs = file.toAbsolutePath();
+        Files.createDirectories(abs.getParent());
+        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
+        try (OutputStream out = new FileOutputStream(tmp.toFile())) {
+            out.write((Json.pretty(node) + "\n").getBytes(StandardCharsets.UTF_8));
+        }
+        Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    /** The first place where two JSON trees differ, as "path: a vs b"; null if equal. */
+    private static String firstDifference(JsonNode a, JsonNode b, String path) {
+        if (a.isObject() && b.isObject()) {
+            Map<String, JsonNode> fields = new LinkedHashMap<>();
+            for (Iterator<String> it = a.fieldNames(); it.hasNext(); ) {
+                fields.put(it.next(), null);
+            }
+            b.fieldNames().forEachRemaining(n -> fields.put(n, null));
+            for (String name : fields.keySet()) {
+                JsonNode x = a.get(name), y = b.get(name);
+                if (x == null || y == null) {
+                    return path + "." + name + ": " + x + " in the study, " + y + " given";
+                }
+                String d = firstDifference(x, y, path + "." + name);
+                if (d != null) {
+                    return d;
+                }
+            }
+            return null;
+        }
+        if (a.isArray() && b.isArray() && a.size() == b.size()) {
+            for (int i = 0; i < a.size(); i++) {
+                String d = firstDifference(a.get(i), b.get(i), path + "[" + i + "]");
+                if (d != null) {
+                    return d;
+                }
+            }
+            return null;
+        }
+        return a.equals(b) ? null : path + ": " + a + " in the study, " + b + " given";
+    }
+}
