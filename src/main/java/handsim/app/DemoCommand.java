@@ -125,9 +125,9 @@ final class DemoCommand implements Callable<Integer> {
         try (Simulator sim = Runtime.simulator(Runtime.model(null), Runtime.simConfig())) {
             for (long s = seed; throwsMade.size() < loops; s++) {
                 if (failedInARow == limits.maxFailedThrowIns()) {
-                    throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch (seeds "
-                            + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), " + throwsMade.size()
-                            + " of " + loops + " throws made: is the " + object + " one a hand can catch?");
+                    throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch "
+                            + "(seeds " + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), "
+                            + throwsMade.size() + " of " + loops + " throws made: is the " + object + " one a hand can catch?");
                 }
                 episodes++;
                 boolean caughtIn = false;

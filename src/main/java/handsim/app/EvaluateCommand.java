@@ -940,7 +940,8 @@ final class EvaluateCommand implements Callable<Integer> {
         for (Json g : j.array(key)) {
             double[] goal = size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size);
             if (key.equals("heights") && !(goal[0] > HeightGoals.LOWEST && goal[0] < HeightGoals.HIGHEST)) {
-                throw g.error("a height goal must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST + ") m, got " + goal[0]);
+                throw g.error("a height goal must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST + ") m, got "
+                        + goal[0]);
             }
             out.add(goal);
         }
