@@ -68,6 +68,7 @@ final class ViewCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
         }
         HeightGoals goals = DemoCommand.parseHeights(heights);
+        new OutputPaths().file("--screenshot", screenshot).check();
         return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, plan, benchmarkFrames, screenshot);
     }
 }
