@@ -208,7 +208,7 @@ final class BenchCommand implements Callable<Integer> {
                 return meter.finish(done, episodes, caught, firstCatches, false, Double.NaN);
             }
             long before = sim.stepCount();
-            var loop = episode.tick();
+            var loop = evaluation.tick(episode, s);
             done += sim.stepCount() - before;
             if (loop != null && loop.caught()) {
                 caught++;

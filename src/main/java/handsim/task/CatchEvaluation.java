@@ -4,6 +4,7 @@ import handsim.control.ControllerConfig;
 import handsim.control.NominalController;
 import handsim.control.Observation;
 import handsim.control.PdController;
+import handsim.control.ThrowDecision;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
@@ -36,6 +37,14 @@ public final class CatchEvaluation {
         void afterTick(Simulator sim);
     }
 
+    /**
+     * The throw policy of episodes whose every throw is decided by their caller ({@link
+     * CatchThrowEpisode#decide}): a learner's environment, a teacher's twin.
+     */
+    public static final ThrowPolicy DECIDED_BY_CALLER = obs -> {
+        throw new IllegalStateException("every throw of these episodes is decided by their caller (CatchThrowEpisode.decide)");
+    };
+
     private final ControllerConfig controllerConfig;
     private final EpisodeLimits limits;
     private final LaunchDistribution launches;
@@ -47,9 +56,8 @@ public final class CatchEvaluation {
     private Simulator twin;
     /** The planner's work in the episodes before the running one. */
     private ThrowPlanner.Stats earlierEpisodes = ThrowPlanner.Stats.NONE;
-    /** The running episode's planner, and the throw its controller makes next; null without planning. */
+    /** The running episode's planner; null without planning. */
     private ThrowPlanner planner;
-    private ChosenThrow liveThrow;
     /** The index of the loop whose throw was planned last (checked against the twin's when it ends). */
     private int plannedLoop = -1;
     private TickWatcher watcher;
@@ -155,26 +163,32 @@ public final class CatchEvaluation {
 
     private LoopRecord tickOnce(CatchThrowEpisode episode, long seed) {
         try {
-            if (planner == null) {
-                return episode.tick();
-            }
-            Observation waiting = episode.waiting();
-            if (waiting != null) {
-                plannedLoop = episode.loops().size();
-                long variations = seed ^ 0x9E3779B97F4A7C15L * plannedLoop;
-                ThrowPlanner.Choice choice = planner.choose(episode, throwPolicy, variations);
-                liveThrow.set(choice.throwing(), choice.catching());
-                episode.resume();
+            if (episode.decision() != null) {
+                decide(episode, seed); // a planned throw is chosen in a tick of its own
                 return null;
             }
-            LoopRecord r = episode.tickOrWait();
-            if (r != null && r.index() == plannedLoop) {
+            LoopRecord r = episode.tick();
+            if (planner == null && episode.decision() != null) {
+                decide(episode, seed); // the throw is decided in the same tick as the catch is judged
+            } else if (r != null && r.index() == plannedLoop) {
                 planner.check(r);
             }
             return r;
         } catch (SimulationDiverged e) {
             throw new SimulationDiverged("episode of seed " + seed + ", loop " + episode.loops().size() + ": " + e.getMessage());
         }
+    }
+
+    /** The throw {@code episode} waits at, decided by the throw policy or, with planning, by the planner. */
+    private void decide(CatchThrowEpisode episode, long seed) {
+        Observation at = episode.decision();
+        if (planner == null) {
+            episode.decide(ThrowDecision.of(throwPolicy.decide(at)));
+            return;
+        }
+        plannedLoop = episode.loops().size();
+        long variations = seed ^ 0x9E3779B97F4A7C15L * plannedLoop;
+        episode.decide(planner.choose(episode, throwPolicy, variations));
     }
 
     /**
@@ -232,14 +246,16 @@ public final class CatchEvaluation {
     public CatchThrowEpisode start(Simulator sim, long seed, Vec3 launchNudge) {
         SplittableRandom rng = new SplittableRandom(seed);
         ObjectSpec thrown = object.randomized(rng);
-        NominalController controller = new NominalController(sim.model(), controllerConfig, thrown,
-                planning == null ? throwPolicy : plan(thrown), sim.config().gravity());
+        NominalController controller = new NominalController(sim.model(), controllerConfig, thrown, sim.config().gravity());
         RigidState sampled = launches.sample(rng, controller.neutralPalm().origin(), controllerConfig.interceptionHeight(),
                 thrown, sim.config().gravity());
         RigidState launch = launchNudge.equals(Vec3.ZERO) ? sampled
                 : new RigidState(sampled.position(), sampled.orientation(), sampled.velocity().plus(launchNudge), sampled.angularVelocity());
         CatchThrowEpisode episode = new CatchThrowEpisode(sim, new PdController(sim.model(), controllerConfig.pd()),
                 controller, task, limits);
+        if (planning != null) {
+            newPlanner(episode);
+        }
         episode.start(thrown, launch, seed);
         if (planner != null) {
             episode.catchThrowInAs(planner.chooseThrowInCatch(episode, throwPolicy, seed));
@@ -248,17 +264,12 @@ public final class CatchEvaluation {
         return episode;
     }
 
-    /** A planner for an episode with {@code thrown}, with its twin episode; the throw policy of the live controller. */
-    private ThrowPolicy plan(ObjectSpec thrown) {
+    /** A planner of its own for {@code live}, an episode not yet started, with its twin episode. */
+    private void newPlanner(CatchThrowEpisode live) {
         if (planner != null) {
             earlierEpisodes = earlierEpisodes.plus(planner.stats());
         }
-        ChosenThrow twinThrow = new ChosenThrow();
-        CatchThrowEpisode twinEpisode = new CatchThrowEpisode(twin, new PdController(twin.model(), controllerConfig.pd()),
-                new NominalController(twin.model(), controllerConfig, thrown, twinThrow, twin.config().gravity()), task, limits);
-        planner = new ThrowPlanner(planning, task, task.throwSpace(controllerConfig.throwSpace()), twinEpisode, twinThrow);
-        liveThrow = new ChosenThrow();
+        planner = new ThrowPlanner(planning, task, task.throwSpace(controllerConfig.throwSpace()), live.twinOn(twin));
         plannedLoop = -1;
-        return liveThrow;
     }
 }

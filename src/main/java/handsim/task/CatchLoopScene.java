@@ -161,7 +161,7 @@ public final class CatchLoopScene implements InteractiveScene {
     public Goal goal() {
         Goal g = evaluation.task().drawing();
         double inFlight = episode.throwGoal();
-        if (g instanceof Goal.Height h && !Double.isNaN(inFlight) && episode.state().phase() != Phase.MIDDLE) {
+        if (g instanceof Goal.Height h && !Double.isNaN(inFlight) && episode.controllerState().phase() != Phase.MIDDLE) {
             return new Goal.Height(inFlight, h.center());
         }
         return g;
@@ -194,7 +194,7 @@ public final class CatchLoopScene implements InteractiveScene {
         if (stopped != null) {
             s.put("stopped", stopped);
         }
-        s.put("state", episode.state().phase().name());
+        s.put("state", episode.controllerState().phase().name());
         // loop 0 catches the throw-in, loop k >= 1 is the k-th throw and its catch
         s.put("loop", Integer.toString(episode.loops().size()));
         s.put("catches in a row", catchesInARow + " (best " + bestInARow + ")");

@@ -3,6 +3,7 @@ package handsim.task;
 import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.Observation;
+import handsim.control.ThrowDecision;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
@@ -246,9 +247,14 @@ public final class ThrowPlanner {
 
     /**
      * A throw and how its catch meets the object (null: as the controller's own): what the planner
-     * chooses (for the throw-in only the catch, the throw null).
+     * tries (for the throw-in only the catch, the throw null).
      */
-    public record Choice(ThrowParameters throwing, CatchStyle catching) {}
+    private record Choice(ThrowParameters throwing, CatchStyle catching) {
+
+        ThrowDecision decision() {
+            return new ThrowDecision(throwing, catching);
+        }
+    }
 
     /**
      * A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads
@@ -260,7 +266,6 @@ public final class ThrowPlanner {
     private final ThrowTask task;
     private final ThrowSpace space;
     private final CatchThrowEpisode twin;
-    private final ChosenThrow twinThrow;
     private int decisions;
     private int tries;
     private int unsolved;
@@ -278,17 +283,15 @@ public final class ThrowPlanner {
 
     /**
      * @param twin an episode in a world of its own (its own engine, {@code IsolatedEngine}), with
-     *     the live episode's model, controller settings and object, whose controller throws what
-     *     {@code twinThrow} holds
+     *     the live episode's model, controller settings and object ({@link CatchThrowEpisode#twinOn})
      * @param task the task whose success counts; its goal must not change from throw to throw
      */
-    ThrowPlanner(Config config, ThrowTask task, ThrowSpace space, CatchThrowEpisode twin, ChosenThrow twinThrow) {
+    ThrowPlanner(Config config, ThrowTask task, ThrowSpace space, CatchThrowEpisode twin) {
         requirePlannable(task);
         this.config = config;
         this.task = task;
         this.space = space;
         this.twin = twin;
-        this.twinThrow = twinThrow;
     }
 
     /** The twin episode is restored without the task's goal, so the planner plans for tasks whose goal never changes. */
@@ -305,18 +308,18 @@ public final class ThrowPlanner {
     }
 
     /**
-     * The throw {@code live} should make now; it must be waiting for one ({@link
-     * CatchThrowEpisode#runUntilThrowDue}). {@code policy} proposes the first try (and, with a
+     * The throw {@code live} should make now; it must be at a decision ({@link
+     * CatchThrowEpisode#advanceToDecision}). {@code policy} proposes the first try (and, with a
      * lookahead, the first from each next state); {@code seed} seeds the variations (the same
      * seed and state give the same choice).
      */
-    public Choice choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
+    public ThrowDecision choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
         CatchThrowEpisode.Checkpoint now = live.checkpoint();
         SplittableRandom rng = new SplittableRandom(seed);
-        ThrowParameters proposal = policy.decide(live.waiting());
+        ThrowParameters proposal = policy.decide(live.decision());
         double[] centre = space.toAction(proposal);
         Trial best = null;
-        if (promised != null && promised.state().sameValues(live.waiting())) {
+        if (promised != null && promised.state().sameValues(live.decision())) {
             promisedDecisions++;
             best = judge(play(now, promised.choice()), policy, rng, config.depth(), promised.next());
             if (!best.success()) {
@@ -356,7 +359,7 @@ public final class ThrowPlanner {
         }
         expected = best.loop();
         promised = best.next();
-        return best.choice();
+        return best.choice().decision();
     }
 
     /**
@@ -403,7 +406,7 @@ public final class ThrowPlanner {
         Choice choice = new Choice(null, style);
         Observation next;
         try {
-            next = twin.runUntilThrowDue();
+            next = twin.advanceToDecision();
         } catch (SimulationDiverged e) {
             return Trial.failed(choice);
         }
@@ -467,7 +470,7 @@ public final class ThrowPlanner {
      */
     private Continuation continuation(ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
         CatchThrowEpisode.Checkpoint next = twin.checkpoint();
-        Observation state = twin.waiting();
+        Observation state = twin.decision();
         if (hint != null && hint.state().sameValues(state)) {
             Trial t = judge(play(next, hint.choice()), policy, rng, depth - 1, hint.next());
             if (t.good()) {
@@ -506,14 +509,13 @@ public final class ThrowPlanner {
         tries++;
         throwEnd = null;
         twin.restore(from);
-        twinThrow.set(candidate.throwing(), candidate.catching());
         Observation next;
         try {
-            twin.resume();
-            if (!config.catchBranches().isEmpty() && twin.runUntilThrowEnds()) {
+            twin.decide(candidate.decision());
+            if (!config.catchBranches().isEmpty() && twin.advanceToThrowEnd()) {
                 throwEnd = twin.checkpoint();
             }
-            next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.runUntilThrowDue() : null;
+            next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.advanceToDecision() : null;
         } catch (SimulationDiverged e) {
             return Trial.failed(candidate);
         }
@@ -531,7 +533,7 @@ public final class ThrowPlanner {
         twin.meetComingCatchAs(candidate.catching());
         Observation next;
         try {
-            next = twin.runUntilThrowDue();
+            next = twin.advanceToDecision();
         } catch (SimulationDiverged e) {
             return Trial.failed(candidate);
         }

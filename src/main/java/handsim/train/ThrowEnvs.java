@@ -23,7 +23,8 @@ public record ThrowEnvs(String task, ObjectSpec object, Supplier<ThrowTask> task
     /** An environment on {@code sim} (which it owns from then on). */
     public ThrowEnv create(Simulator sim) {
         ThrowTask t = tasks.get();
-        return new ThrowEnv(sim, t, space, state, settings, policy -> new CatchEvaluation(controller, limits, launches, object, t, policy));
+        return new ThrowEnv(sim, t, space, state, settings, 
+                new CatchEvaluation(controller, limits, launches, object, t, CatchEvaluation.DECIDED_BY_CALLER));
     }
 
     /** The length of the state the environments give. */

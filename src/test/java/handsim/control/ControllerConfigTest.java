@@ -52,7 +52,7 @@ class ControllerConfigTest {
         ((ObjectNode) node.get("grasps").get("can")).put("closedPose", "fist");
         ControllerConfig config = parse(node);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new NominalController(
-                TestSupport.model(), config, TestSupport.object("can"), obs -> null, new Vec3(0, -9.81, 0)));
+                TestSupport.model(), config, TestSupport.object("can"), new Vec3(0, -9.81, 0)));
         assertTrue(e.getMessage().contains("grasp of can") && e.getMessage().contains("fist"), e.getMessage());
     }
 }

@@ -51,14 +51,15 @@ class CatchLoopTest {
         List<String> rows = new ArrayList<>();
         EpisodeResult result;
         try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
-            CatchThrowEpisode episode = evaluation().start(sim, SEED);
+            CatchEvaluation evaluation = evaluation();
+            CatchThrowEpisode episode = evaluation.start(sim, SEED);
             int ticks = 0;
             // first catch, then one throw and its catch: two loop records
             while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() < 2) {
                 if (ticks++ % ROW_EVERY == 0) {
                     rows.add(row(episode));
                 }
-                episode.tick();
+                evaluation.tick(episode, SEED);
             }
             result = episode.result(SEED);
         }
@@ -148,7 +149,7 @@ class CatchLoopTest {
     private static String row(CatchThrowEpisode e) {
         var obs = e.observe();
         Vec3 p = obs.palm().origin(), o = obs.object().position();
-        return String.format(Locale.ROOT, "%.4f,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", obs.time(), e.state().phase(),
+        return String.format(Locale.ROOT, "%.4f,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", obs.time(), e.controllerState().phase(),
                 p.x(), p.y(), p.z(), o.x(), o.y(), o.z());
     }
 

@@ -14,6 +14,7 @@ import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.control.Phase;
+import handsim.control.ThrowDecision;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
 import java.util.List;
@@ -58,10 +59,9 @@ class ThrowPlannerTest {
                 TestSupport.tasks().create("flip", object));
     }
 
-    private CatchEvaluation flipWith(String object, ChosenThrow throwing) {
-        ThrowTask task = TestSupport.tasks().create("flip", object);
-        return new CatchEvaluation(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), task, throwing);
+    /** The nominal flip of {@code object}, its catch as {@code catching} says (null: the controller's own). */
+    private static ThrowDecision nominalThrow(String object, CatchStyle catching) {
+        return new ThrowDecision(TestSupport.tasks().create("flip", object).nominalThrow(), catching);
     }
 
     private static Simulator engine() {
@@ -73,12 +73,12 @@ class ThrowPlannerTest {
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation evaluation = nominalFlip();
             CatchThrowEpisode episode = evaluation.start(live, NOMINAL_FAILS);
-            episode.runUntilThrowDue(); // the throw-in caught
-            episode.resume();
-            episode.runUntilThrowDue(); // the first flip caught, the second about to be thrown
+            episode.advanceToDecision(); // the throw-in caught
+            episode.decide(nominalThrow("can", null));
+            episode.advanceToDecision(); // the first flip caught, the second about to be thrown
             CatchThrowEpisode.Checkpoint beforeSecond = episode.checkpoint();
-            episode.resume();
-            episode.runUntilThrowDue();
+            episode.decide(nominalThrow("can", null));
+            episode.advanceToDecision();
             List<LoopRecord> original = List.copyOf(episode.loops());
 
             // a controller made for another seed's can (its size and mass vary by seed) is refused
@@ -87,11 +87,11 @@ class ThrowPlannerTest {
             assertTrue(e.getMessage().contains("same object"), e.getMessage());
 
             CatchThrowEpisode copy = nominalFlip().start(twin, NOMINAL_FAILS);
-            copy.runUntilThrowDue(); // elsewhere in the episode: all of it is replaced by the restore
+            copy.advanceToDecision(); // elsewhere in the episode: all of it is replaced by the restore
             copy.restore(beforeSecond);
             assertEquals(2, copy.loops().size());
-            copy.resume();
-            copy.runUntilThrowDue();
+            copy.decide(nominalThrow("can", null));
+            copy.advanceToDecision();
             // records compare their doubles exactly: the twin world steps on bit for bit (OdeSimulatorTest)
             assertEquals(original, copy.loops());
             assertEquals(3, original.size(), "the second flip was thrown and judged in both");
@@ -206,7 +206,7 @@ class ThrowPlannerTest {
             assertEquals(0, s.mispredicted(), s.toString());
 
             CatchThrowEpisode ticked = planned.start(live, CLUB_THROW_IN_DROPPED);
-            ticked.tick();
+            planned.tick(ticked, CLUB_THROW_IN_DROPPED);
             assertThrows(IllegalStateException.class, () -> ticked.catchThrowInAs(throwIn.get(1)),
                     "the throw-in's catch is chosen before the first tick only");
         }
@@ -267,24 +267,20 @@ class ThrowPlannerTest {
     void aCatchChosenWhenThrowEndsIsTheCatchAThrowChosenWithItMakes() {
         CatchStyle style = CLUB_BRANCH; // not the controller's own (0, 0.7)
         try (Simulator live = engine(); Simulator twin = engine()) {
-            ChosenThrow withStyle = new ChosenThrow();
-            CatchThrowEpisode thrownWithStyle = flipWith("club", withStyle).start(live, CLUB_BRANCH_SEED);
-            thrownWithStyle.runUntilThrowDue();
+            CatchThrowEpisode thrownWithStyle = nominalFlip("club").start(live, CLUB_BRANCH_SEED);
+            thrownWithStyle.advanceToDecision();
             var e = assertThrows(IllegalStateException.class, () -> thrownWithStyle.meetComingCatchAs(style));
             assertTrue(e.getMessage().contains("MIDDLE"), "the catch before a throw is over: " + e.getMessage());
-            withStyle.set(TestSupport.tasks().create("flip", "club").nominalThrow(), style);
-            thrownWithStyle.resume();
-            thrownWithStyle.runUntilThrowDue();
+            thrownWithStyle.decide(nominalThrow("club", style));
+            thrownWithStyle.advanceToDecision();
 
-            ChosenThrow plain = new ChosenThrow();
-            CatchThrowEpisode branched = flipWith("club", plain).start(twin, CLUB_BRANCH_SEED);
-            branched.runUntilThrowDue();
-            plain.set(TestSupport.tasks().create("flip", "club").nominalThrow());
-            branched.resume();
-            assertTrue(branched.runUntilThrowEnds());
-            assertEquals(Phase.GOBACK, branched.state().phase());
+            CatchThrowEpisode branched = nominalFlip("club").start(twin, CLUB_BRANCH_SEED);
+            branched.advanceToDecision();
+            branched.decide(nominalThrow("club", null));
+            assertTrue(branched.advanceToThrowEnd());
+            assertEquals(Phase.GOBACK, branched.controllerState().phase());
             branched.meetComingCatchAs(style);
-            branched.runUntilThrowDue();
+            branched.advanceToDecision();
             // records compare their doubles exactly: nothing before CATCH reads the style, so choosing it
             // when THROW ends makes the same loop as choosing it when THROW begins
             assertEquals(thrownWithStyle.loops(), branched.loops());
