@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.evaluation.ResultJson;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
@@ -11,7 +13,7 @@ import handsim.control.ControllerConfig;
 import handsim.control.ThrowPolicy;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
-import handsim.report.EpisodeJournal;
+import handsim.evaluation.EpisodeJournal;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.rollout.LocalRollouts;
@@ -20,15 +22,15 @@ import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.task.BoxTask;
-import handsim.task.BoxTests;
-import handsim.task.CatchEvaluation;
-import handsim.task.ThrowPlanner;
+import handsim.evaluation.BoxTrials;
+import handsim.evaluation.CatchEvaluation;
+import handsim.evaluation.ThrowPlanner;
 import handsim.task.EpisodeResult;
 import handsim.task.FlipTask;
-import handsim.task.HeightErrors;
+import handsim.evaluation.HeightErrors;
 import handsim.task.HeightGoals;
-import handsim.task.LaunchSensitivity;
-import handsim.task.LoopProgress;
+import handsim.evaluation.LaunchSensitivity;
+import handsim.evaluation.LongEpisodeProgress;
 import handsim.task.LoopRecord;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
@@ -136,7 +138,7 @@ final class EvaluateCommand implements Callable<Integer> {
     double nudge;
 
     @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
-            + "world first (handsim.task.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
+            + "world first (handsim.evaluation.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
     boolean plan;
 
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON, with its provenance (commit, "
@@ -338,7 +340,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** A progress line with the time left every configs/episode.json progressEveryLoops loops of an episode. */
     private CatchEvaluation.LoopListener longEpisodeProgress() {
-        return new LoopProgress(System.out, Runtime.episodeLimits().progressEveryLoops(), loops);
+        return new LongEpisodeProgress(System.out, Runtime.episodeLimits().progressEveryLoops(), loops);
     }
 
     /** The controller as printed and in the charts' titles: with --plan, "learned + planner". */
@@ -511,10 +513,10 @@ final class EvaluateCommand implements Callable<Integer> {
             }
         }
         StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
-        List<BoxTests.Test> results = rollouts.run(boxes.size(), resumable(sim -> {
+        List<BoxTrials.Test> results = rollouts.run(boxes.size(), resumable(sim -> {
             BoxTask t = (BoxTask) tasks.create("box", object);
             CatchEvaluation evaluation = evaluation(t, policies, cc, spec);
-            return i -> BoxTests.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
+            return i -> BoxTrials.run(evaluation, t, sim, i, seed + i, boxes.get(i), BOX_LOOPS_REQUIRED);
         }, ResultJson::boxTest, ResultJson::boxTest), (i, r) -> {
             System.out.printf(Locale.ROOT, "test %3d: box (%.3f, %.3f, %.3f), %.3f m from the centre: %s (%d in a row)%n",
                     r.index(), r.box().x(), r.box().y(), r.box().z(), r.distance(), r.success() ? "success" : "failure", r.inARow());
@@ -522,19 +524,19 @@ final class EvaluateCommand implements Callable<Integer> {
                     r.box().y(), r.box().z(), r.distance(), r.success(), r.inARow()));
         });
         double radius = reference.regionRadius();
-        long successes = results.stream().filter(BoxTests.Test::success).count();
+        long successes = results.stream().filter(BoxTrials.Test::success).count();
         out.put("tests", results.size());
         out.put("successes", successes);
         putRate(out, "success_rate", results);
         out.put("loops_required", BOX_LOOPS_REQUIRED);
         out.put("region_radius_m", radius);
-        List<BoxTests.Test> inner = BoxTests.band(results, 0, 0.5 * radius);
+        List<BoxTrials.Test> inner = BoxTrials.band(results, 0, 0.5 * radius);
         out.put("inner_half_tests", inner.size());
         putRate(out, "inner_half_success_rate", inner);
         ArrayNode bands = out.putArray("by_distance");
         for (int b = 0; b < BOX_BANDS; b++) {
             double lo = radius * b / BOX_BANDS, hi = b == BOX_BANDS - 1 ? Double.POSITIVE_INFINITY : radius * (b + 1) / BOX_BANDS;
-            List<BoxTests.Test> in = BoxTests.band(results, lo, hi);
+            List<BoxTrials.Test> in = BoxTrials.band(results, lo, hi);
             ObjectNode o = bands.addObject();
             o.put("from_m", lo);
             o.put("to_m", Math.min(hi, radius));
@@ -546,7 +548,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 percent(results), 0.5 * radius, percent(inner), inner.size());
         writeCsv(rows);
         if (plot != null) {
-            BoxTests.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
+            BoxTrials.writeMap(plot, results, reference.regionCenter(), String.format(Locale.ROOT,
                     "Box tests, %s controller (%d of %d succeeded)", controller, successes, results.size()));
             System.out.println("wrote " + plot);
         }
@@ -584,16 +586,16 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /** A success rate in the JSON: null for no tests (NaN is not JSON). */
-    private static void putRate(ObjectNode node, String field, List<BoxTests.Test> tests) {
+    private static void putRate(ObjectNode node, String field, List<BoxTrials.Test> tests) {
         if (tests.isEmpty()) {
             node.putNull(field);
         } else {
-            node.put(field, BoxTests.successRate(tests));
+            node.put(field, BoxTrials.successRate(tests));
         }
     }
 
-    private static String percent(List<BoxTests.Test> tests) {
-        return tests.isEmpty() ? "no tests" : String.format(Locale.ROOT, "%.1f %%", 100 * BoxTests.successRate(tests));
+    private static String percent(List<BoxTrials.Test> tests) {
+        return tests.isEmpty() ? "no tests" : String.format(Locale.ROOT, "%.1f %%", 100 * BoxTrials.successRate(tests));
     }
 
     // ---- flip -----------------------------------------------------------------------------

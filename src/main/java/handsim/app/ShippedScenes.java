@@ -6,16 +6,16 @@ import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.config.ConfigException;
 import handsim.control.ThrowPolicy;
-import handsim.task.CatchEvaluation;
-import handsim.task.CatchLoopScene;
+import handsim.evaluation.CatchEvaluation;
+import handsim.scene.CatchLoopScene;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.InteractiveScene;
-import handsim.task.SceneCatalog;
-import handsim.task.SceneSetup;
+import handsim.scene.InteractiveScene;
+import handsim.scene.SceneCatalog;
+import handsim.scene.SceneSetup;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -49,7 +49,7 @@ final class ShippedScenes implements SceneCatalog {
     /**
      * {@code goals} are shared by every scene opened (moving the goal survives a switch of
      * object); {@code policy} is the learned controller's file, or null; with {@code plan} a
-     * {@link handsim.task.ThrowPlanner} chooses the flip task's throws.
+     * {@link handsim.evaluation.ThrowPlanner} chooses the flip task's throws.
      */
     ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, boolean plan) {
         this.goals = goals;

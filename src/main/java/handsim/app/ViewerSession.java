@@ -1,12 +1,12 @@
 package handsim.app;
 
 import handsim.config.Home;
-import handsim.live.LiveRun;
-import handsim.live.SimClock;
-import handsim.task.HeightControl;
+import handsim.scene.LiveRun;
+import handsim.scene.SimClock;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.SceneSetup;
-import handsim.task.SwitchingScene;
+import handsim.scene.SceneSetup;
+import handsim.scene.SwitchingScene;
 import handsim.viewer.Viewer;
 import handsim.viewer.ViewerConfig;
 import java.nio.file.Path;

@@ -95,8 +95,7 @@ public final class CatchThrowEpisode {
 
     /**
      * Before the first tick: the controller starts again from the same observation, meeting the
-     * launched object as {@code style} says (null: its own way). A planner chooses it ({@link
-     * handsim.evaluation.ThrowPlanner#chooseThrowInCatch}).
+     * launched object as {@code style} says (null: its own way): a throw planner's choice.
      */
     public void catchThrowInAs(CatchStyle style) {
         if (!s.loops.isEmpty() || sim.time() != s.loop.loopStart || s.decision != null) {

@@ -7,7 +7,7 @@ import handsim.control.ThrowSpace;
 import handsim.learn.Env;
 import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.LoopRecord;
 import handsim.task.StateVector;

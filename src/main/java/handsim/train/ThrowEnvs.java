@@ -4,7 +4,7 @@ import handsim.control.ControllerConfig;
 import handsim.control.ThrowSpace;
 import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.LaunchDistribution;
 import handsim.task.StateVector;

@@ -6,11 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import handsim.config.Json;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.InteractiveScene;
-import handsim.task.SceneCatalog;
-import handsim.task.SceneSetup;
+import handsim.scene.InteractiveScene;
+import handsim.scene.SceneCatalog;
+import handsim.scene.SceneSetup;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;

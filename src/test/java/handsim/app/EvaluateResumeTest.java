@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.evaluation.ResultJson;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -11,7 +11,7 @@ import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
 import handsim.sim.ode.IsolatedEngine;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightGoals;

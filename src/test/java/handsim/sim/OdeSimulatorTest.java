@@ -13,7 +13,7 @@ import handsim.model.HandModel;
 import handsim.model.Site;
 import handsim.sim.ode.IsolatedEngine;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.HeldBallScenario;
+import handsim.scene.HeldBallScenario;
 import handsim.task.ServoLoop;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;

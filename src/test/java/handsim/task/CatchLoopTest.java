@@ -1,5 +1,7 @@
 package handsim.task;
 
+import handsim.evaluation.CatchEvaluation;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -29,7 +31,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  * configs/launch.json) is caught on its first arrival and thrown and caught again, and the
  * loop follows a recorded golden trajectory.
  */
-class CatchLoopTest {
+public class CatchLoopTest {
 
     static final long SEED = 1;
     static final Path GOLDEN = Path.of("src/test/resources/golden/sphere_seed1_loop.csv");
@@ -135,7 +137,7 @@ class CatchLoopTest {
         }
     }
 
-    static CatchEvaluation evaluation() {
+    public static CatchEvaluation evaluation() {
         return evaluation("sphere");
     }
 

@@ -11,7 +11,7 @@ import handsim.sim.ContactReport;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.SimConfig;
-import handsim.task.HeldBallScenario;
+import handsim.scene.HeldBallScenario;
 import handsim.task.ServoLoop;
 import java.lang.management.ManagementFactory;
 import java.util.SplittableRandom;

@@ -1,0 +1,566 @@
+package handsim.evaluation;
+
+import handsim.task.CatchThrowEpisode;
+import handsim.task.LoopRecord;
+import handsim.task.ThrowTask;
+
+import handsim.config.Json;
+import handsim.control.CatchStyle;
+import handsim.control.Observation;
+import handsim.control.ThrowDecision;
+import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
+import handsim.control.ThrowSpace;
+import handsim.math.Vec3;
+import handsim.sim.SimulationDiverged;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+/**
+ * Chooses each throw by trying it first in a twin world: a sampling planner on top of a throw
+ * policy, in the spirit of sampling-based character control (not part of the paper). When the
+ * live episode is about to throw, its whole state is copied into a twin episode ({@link
+ * CatchThrowEpisode#checkpoint}); there the policy's throw and random variations of it are each
+ * played out through the flight, the catch and MIDDLE, up to the next throw; the live hand then
+ * makes the best of them. The twin steps on bit for bit as the live world would, so the live
+ * throw does exactly what it did in the twin.
+ *
+ * <p>What the live world sees is an ordinary throw: the planner only chooses the seven THROW
+ * parameters and, when it has catch styles, how the catch after the throw meets the object (the
+ * interception plane's height and the palm's speed there, {@link CatchStyle}); the object is moved
+ * by gravity, damping and contacts alone. What it costs is
+ * the simulation of the tries (each about 1.5 s of simulated time).
+ *
+ * <p>A try is better when the task counts its throw a success; with a lookahead, when a throw
+ * from the state it leads to succeeds too (no dead end; that throw is then tried first at the next
+ * decision, so the search there cannot miss it); then, among successes, when the long
+ * object lies across the palm, along the palm's z axis (where the next throw succeeds most often;
+ * docs/experiments.md, "Planner"); among failures, by the task's reward. The search
+ * stops at the first such success lying across within {@code goodAlignment}; when none of a
+ * round's tries was one, the next round goes on with its own spread (an object may have rounds of
+ * its own: the club's are many and narrow, docs/experiments.md, "Planner").
+ *
+ * <p>Before an episode's first tick the planner may likewise choose how the hand catches the
+ * throw-in ({@link #chooseThrowInCatch}): only the catch, the launch is the episode's.
+ */
+public final class ThrowPlanner {
+
+    /**
+     * One round of the search: up to {@code candidates} throws, each the proposal varied by a
+     * Gaussian of standard deviation {@code spread} in the policy's action units ([-1, 1] per
+     * entry); with {@code catchStyles}, the round's try c is caught with style c mod their number
+     * (instead of as the config's {@link Config#catchStyles} say).
+     */
+    public record Round(int candidates, double spread, List<CatchStyle> catchStyles) {
+
+        public Round {
+            catchStyles = List.copyOf(catchStyles);
+        }
+
+        /** A round whose tries are caught as the config says. */
+        public Round(int candidates, double spread) {
+            this(candidates, spread, List.of());
+        }
+
+        static Round parse(Json j) {
+            Round r = new Round(j.integer("candidates", 1, 10000), j.number("spread", 0, 2), Config.styles(j, "catchStyles"));
+            j.requireNoUnknownFields();
+            return r;
+        }
+    }
+
+    /**
+     * {@code configs/planner.json}.
+     *
+     * @param rounds the search's rounds in order; the first try of the first is the policy's own
+     *     throw; a round after the first begins only when no earlier try was a success leading on
+     * @param goodAlignment |long axis . palm z| after the catch at which a successful try ends the search
+     * @param lookahead throws tried at most from a successful try's next state (the policy's, then
+     *     variations by the spread of round 1; the first that succeeds is tried first when the live
+     *     hand reaches that state); the try counts as a dead end when none succeeds;
+     *     0: no lookahead
+     * @param catchStyles how the catch after a tried throw meets the object, in turn: a decision's
+     *     try k (and the lookahead's try k from each next state) is caught with style k mod their
+     *     number; none: every catch as the controller's own
+     * @param throwInStyles ways to catch the episode's throw-in tried after the controller's own, in
+     *     order, until one holds the object and (with a lookahead) leads on ({@link
+     *     #chooseThrowInCatch}); none: the throw-in is caught as the controller's own, untried
+     * @param catchBranches other ways to catch a tried throw that turned the object far enough but
+     *     was no success leading on: the throw is played once and its catch played again from where
+     *     THROW ends with each of these in order, until one is ({@link #tryThrow}); the lookahead's
+     *     throws likewise; none: each throw is caught one way
+     * @param lookaheadDepth with a lookahead, how many throws in a row from a try's next state must
+     *     succeed for it to lead on: 1, a throw from its next state succeeds; 2, and a throw from
+     *     that one's next state too (each found among up to {@code lookahead} throws), and so on
+     */
+    public record Config(List<Round> rounds, double goodAlignment, int lookahead, List<CatchStyle> catchStyles,
+            List<CatchStyle> throwInStyles, List<CatchStyle> catchBranches, int lookaheadDepth) {
+
+        public Config {
+            rounds = List.copyOf(rounds);
+            catchStyles = List.copyOf(catchStyles);
+            throwInStyles = List.copyOf(throwInStyles);
+            catchBranches = List.copyOf(catchBranches);
+            if (rounds.isEmpty()) {
+                throw new IllegalArgumentException("a planner needs at least one round");
+            }
+        }
+
+        /** Settings whose tries are all caught as the controller's own. */
+        public Config(List<Round> rounds, double goodAlignment, int lookahead) {
+            this(rounds, goodAlignment, lookahead, List.of(), List.of(), List.of(), 1);
+        }
+
+        /** These settings with {@code branches} as their {@link #catchBranches}. */
+        public Config withCatchBranches(List<CatchStyle> branches) {
+            return new Config(rounds, goodAlignment, lookahead, catchStyles, throwInStyles, branches, lookaheadDepth);
+        }
+
+        /** These settings with a lookahead of {@code depth} throws in a row ({@link #lookaheadDepth}). */
+        public Config withLookaheadDepth(int depth) {
+            return new Config(rounds, goodAlignment, lookahead, catchStyles, throwInStyles, catchBranches, depth);
+        }
+
+        /** How many throws in a row a try's lookahead plays: 0 without a lookahead. */
+        int depth() {
+            return lookahead == 0 ? 0 : lookaheadDepth;
+        }
+
+        /** The file's own settings: those of an object without an entry under {@code objects}. */
+        public static Config parse(Json j) {
+            return parse(j, null);
+        }
+
+        /**
+         * The settings for {@code object}: the file's {@code rounds}, {@code goodAlignment}, {@code
+         * lookahead}, {@code lookaheadDepth}, {@code catchStyles}, {@code throwInStyles} and {@code
+         * catchBranches}, each replaced by the one under {@code objects.<object>} when that entry
+         * has it (every object's entry is checked, whichever object is planned).
+         */
+        public static Config parse(Json j, String object) {
+            j.allow("comment");
+            Config file = new Config(rounds(j), j.number("goodAlignment", 0, 1), lookahead(j), styles(j, "catchStyles"),
+                    styles(j, "throwInStyles"), styles(j, "catchBranches"), lookaheadDepth(j, 1));
+            Config chosen = file;
+            if (j.has("objects")) {
+                Json objects = j.get("objects");
+                for (String name : objects.fieldNames()) {
+                    Json entry = objects.get(name);
+                    entry.allow("comment");
+                    Config own = new Config(entry.has("rounds") ? rounds(entry) : file.rounds(),
+                            entry.has("goodAlignment") ? entry.number("goodAlignment", 0, 1) : file.goodAlignment(),
+                            entry.has("lookahead") ? lookahead(entry) : file.lookahead(),
+                            entry.has("catchStyles") ? styles(entry, "catchStyles") : file.catchStyles(),
+                            entry.has("throwInStyles") ? styles(entry, "throwInStyles") : file.throwInStyles(),
+                            entry.has("catchBranches") ? styles(entry, "catchBranches") : file.catchBranches(),
+                            lookaheadDepth(entry, file.lookaheadDepth()));
+                    entry.requireNoUnknownFields();
+                    if (name.equals(object)) {
+                        chosen = own;
+                    }
+                }
+            }
+            j.requireNoUnknownFields();
+            return chosen;
+        }
+
+        private static int lookahead(Json j) {
+            return j.integer("lookahead", 0, 10000);
+        }
+
+        private static int lookaheadDepth(Json j, int otherwise) {
+            return j.has("lookaheadDepth") ? j.integer("lookaheadDepth", 1, 5) : otherwise;
+        }
+
+        static List<CatchStyle> styles(Json j, String field) {
+            return j.has(field) ? j.array(field).stream().map(CatchStyle::parse).toList() : List.of();
+        }
+
+        /** How try {@code k} of a search is caught: null for the controller's own. */
+        CatchStyle catchStyle(int k) {
+            return catchStyles.isEmpty() ? null : catchStyles.get(k % catchStyles.size());
+        }
+
+        private static List<Round> rounds(Json j) {
+            List<Json> list = j.array("rounds");
+            if (list.isEmpty()) {
+                throw j.fieldError("rounds", "needs at least one round, got []");
+            }
+            return list.stream().map(Round::parse).toList();
+        }
+
+        /** The most throws one decision tries (without the lookahead's). */
+        public int maxTries() {
+            return rounds.stream().mapToInt(Round::candidates).sum();
+        }
+    }
+
+    /**
+     * The planner's work so far: throw decisions, tries (the lookahead's and the throw-in's
+     * included), decisions where no try succeeded, live loops whose record differed in any way
+     * from the chosen try's (0 while the twin steps on bit for bit; a promised throw that failed
+     * counts too), decisions that began with the throw the lookahead had found to succeed from
+     * their state (promised), decisions whose throw is caught otherwise than the controller's own
+     * way, throw-ins caught otherwise, and catches played again from a tried throw's end with
+     * another style ({@link Config#catchBranches}; counted among the tries too).
+     */
+    public record Stats(int decisions, int tries, int unsolved, int mispredicted, int promised, int restyledCatches,
+            int restyledThrowIns, int branches) {
+
+        public static final Stats NONE = new Stats(0, 0, 0, 0, 0, 0, 0, 0);
+
+        public Stats plus(Stats o) {
+            return new Stats(decisions + o.decisions, tries + o.tries, unsolved + o.unsolved, mispredicted + o.mispredicted,
+                    promised + o.promised, restyledCatches + o.restyledCatches, restyledThrowIns + o.restyledThrowIns,
+                    branches + o.branches);
+        }
+    }
+
+    /**
+     * One throw played out in the twin: whether it succeeded and, with a lookahead, the throw from
+     * its next state that succeeded too ({@code next}, null when none did; without a lookahead a
+     * success counts as leading on); the loop it made there (null if it diverged).
+     */
+    private record Trial(Choice choice, boolean success, boolean open, double reward, double alignment,
+            LoopRecord loop, Continuation next) {
+
+        static Trial failed(Choice choice) {
+            return new Trial(choice, false, false, Double.NEGATIVE_INFINITY, 0, null, null);
+        }
+
+        /** A success that leads on: the kind of try the search looks for. */
+        boolean good() {
+            return success && open;
+        }
+
+        boolean betterThan(Trial o) {
+            if (success != o.success) {
+                return success;
+            }
+            if (open != o.open) {
+                return open;
+            }
+            return success ? alignment > o.alignment : reward > o.reward;
+        }
+
+        Trial leadingOn(Continuation c) {
+            return new Trial(choice, success, c != null, reward, alignment, loop, c);
+        }
+    }
+
+    /**
+     * A throw and how its catch meets the object (null: as the controller's own): what the planner
+     * tries (for the throw-in only the catch, the throw null).
+     */
+    private record Choice(ThrowParameters throwing, CatchStyle catching) {
+
+        ThrowDecision decision() {
+            return new ThrowDecision(throwing, catching);
+        }
+    }
+
+    /**
+     * A choice the lookahead found to succeed from {@code state}, the decision a chosen try leads
+     * to; with a deeper lookahead, {@code next}: the one found from the state it leads to (else null).
+     */
+    private record Continuation(Observation state, Choice choice, Continuation next) {}
+
+    private final Config config;
+    private final ThrowTask task;
+    private final ThrowSpace space;
+    private final CatchThrowEpisode twin;
+    private int decisions;
+    private int tries;
+    private int unsolved;
+    private int mispredicted;
+    private int promisedDecisions;
+    private int restyledCatches;
+    private int restyledThrowIns;
+    private int branches;
+    /** Where the last throw {@link #play}ed in the twin ended THROW (with catch branches only), or null. */
+    private CatchThrowEpisode.Checkpoint throwEnd;
+    /** The loop the last chosen throw made in the twin, until {@link #check}ed against the live one. */
+    private LoopRecord expected;
+    /** The lookahead's successful throw from the state the last chosen throw leads to, tried first there. */
+    private Continuation promised;
+
+    /**
+     * @param twin an episode in a world of its own (its own engine, {@code IsolatedEngine}), with
+     *     the live episode's model, controller settings and object ({@link CatchThrowEpisode#twinOn})
+     * @param task the task whose success counts; its goal must not change from throw to throw
+     */
+    ThrowPlanner(Config config, ThrowTask task, ThrowSpace space, CatchThrowEpisode twin) {
+        requirePlannable(task);
+        this.config = config;
+        this.task = task;
+        this.space = space;
+        this.twin = twin;
+    }
+
+    /** The twin episode is restored without the task's goal, so the planner plans for tasks whose goal never changes. */
+    static void requirePlannable(ThrowTask task) {
+        if (task.goalSize() != 0) {
+            throw new IllegalArgumentException("the throw planner needs a task whose goal stays the same from throw to throw "
+                    + "(flip); the " + task.name() + " task's changes");
+        }
+    }
+
+    public Stats stats() {
+        return new Stats(decisions, tries, unsolved, mispredicted, promisedDecisions, restyledCatches, restyledThrowIns,
+                branches);
+    }
+
+    /**
+     * The throw {@code live} should make now; it must be at a decision ({@link
+     * CatchThrowEpisode#advanceToDecision}). {@code policy} proposes the first try (and, with a
+     * lookahead, the first from each next state); {@code seed} seeds the variations (the same
+     * seed and state give the same choice).
+     */
+    public ThrowDecision choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
+        CatchThrowEpisode.Checkpoint now = live.checkpoint();
+        SplittableRandom rng = new SplittableRandom(seed);
+        ThrowParameters proposal = policy.decide(live.decision());
+        double[] centre = space.toAction(proposal);
+        Trial best = null;
+        if (promised != null && promised.state().sameValues(live.decision())) {
+            promisedDecisions++;
+            best = judge(play(now, promised.choice()), policy, rng, config.depth(), promised.next());
+            if (!best.success()) {
+                mispredicted++; // the twin had shown this throw succeed from this very state
+            }
+        }
+        promised = null;
+        int k = 0;
+        search:
+        for (int round = 0; round < config.rounds().size(); round++) {
+            if (best != null && best.good() && (round > 0 || best.alignment() >= config.goodAlignment())) {
+                break;
+            }
+            Round r = config.rounds().get(round);
+            for (int c = 0; c < r.candidates(); c++, k++) {
+                ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, r.spread(), rng));
+                CatchStyle catching = r.catchStyles().isEmpty() ? config.catchStyle(k)
+                        : r.catchStyles().get(c % r.catchStyles().size());
+                Trial t = tryThrow(now, new Choice(candidate, catching), policy, rng, config.depth());
+                if (best == null || t.betterThan(best)) {
+                    best = t;
+                }
+                if (best.good() && best.alignment() >= config.goodAlignment()) {
+                    break search;
+                }
+            }
+        }
+        decisions++;
+        if (!best.success()) {
+            unsolved++;
+        }
+        if (best.choice().catching() != null) {
+            restyledCatches++;
+        }
+        if (live.sim().captureState().randomSeed() != now.world().randomSeed()) {
+            throw new IllegalStateException("the twin world shares the live world's engine: give it one of its own (IsolatedEngine)");
+        }
+        expected = best.loop();
+        promised = best.next();
+        return best.choice().decision();
+    }
+
+    /**
+     * How {@code live}, started and not yet ticked, should catch its throw-in: the controller's own
+     * way and then each of the config's throw-in styles are played out in the twin up to the first
+     * throw's decision, until one holds the object and, with a lookahead, a throw from there
+     * succeeds (that throw is then tried first at the decision). Otherwise the best as {@link
+     * Trial#betterThan} ranks them, the earliest among equals. Null: the controller's own way,
+     * also when the config has no throw-in styles (nothing is tried then).
+     */
+    public CatchStyle chooseThrowInCatch(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
+        promised = null;
+        if (config.throwInStyles().isEmpty()) {
+            return null;
+        }
+        CatchThrowEpisode.Checkpoint start = live.checkpoint();
+        SplittableRandom rng = new SplittableRandom(seed);
+        List<CatchStyle> styles = new ArrayList<>();
+        styles.add(null);
+        styles.addAll(config.throwInStyles());
+        Trial best = null;
+        for (CatchStyle style : styles) {
+            Trial t = judge(playThrowIn(start, style), policy, rng, config.depth(), null);
+            if (best == null || t.betterThan(best)) {
+                best = t;
+            }
+            if (best.good()) {
+                break;
+            }
+        }
+        if (best.choice().catching() != null) {
+            restyledThrowIns++;
+        }
+        expected = best.loop();
+        promised = best.next();
+        return best.choice().catching();
+    }
+
+    /** The throw-in caught as {@code style} says in the twin, up to the first throw's decision: a success if it holds. */
+    private Trial playThrowIn(CatchThrowEpisode.Checkpoint start, CatchStyle style) {
+        tries++;
+        twin.restore(start);
+        twin.catchThrowInAs(style);
+        Choice choice = new Choice(null, style);
+        Observation next;
+        try {
+            next = twin.advanceToDecision();
+        } catch (SimulationDiverged e) {
+            return Trial.failed(choice);
+        }
+        if (twin.loops().isEmpty()) {
+            return Trial.failed(choice);
+        }
+        LoopRecord made = twin.loops().get(0);
+        boolean held = next != null && made.caught();
+        return new Trial(choice, held, held, 0, held ? alignment(next) : 0, made, null);
+    }
+
+    /** Compares the loop the live episode made with the chosen throw to the one it made in the twin. */
+    public void check(LoopRecord made) {
+        if (expected != null && !expected.equals(made)) {
+            mispredicted++;
+        }
+        expected = null;
+    }
+
+    /**
+     * Whether a successful try, the twin standing at its next state, leads on: {@code depth}
+     * throws in a row from there succeed, each found among up to {@code lookahead} (0: judged as
+     * played). {@code hint}: a continuation found before from that state, tried first.
+     */
+    private Trial judge(Trial t, ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
+        return depth > 0 && t.success() ? t.leadingOn(continuation(policy, rng, depth, hint)) : t;
+    }
+
+    /**
+     * {@code candidate} played and judged; when it is no success leading on but the task says
+     * another catch may matter, its throw's catch is played again from where THROW ended with
+     * each of the config's catch branches in turn, until one is: the best of them.
+     */
+    private Trial tryThrow(CatchThrowEpisode.Checkpoint from, Choice candidate, ThrowPolicy policy, SplittableRandom rng, int depth) {
+        Trial played = play(from, candidate);
+        CatchThrowEpisode.Checkpoint end = throwEnd; // before the lookahead plays on from the try
+        Trial best = judge(played, policy, rng, depth, null);
+        if (end == null || best.good() || best.loop() == null || !task.catchMayMatter(best.loop())) {
+            return best;
+        }
+        for (CatchStyle style : config.catchBranches()) {
+            if (style.equals(candidate.catching())) {
+                continue;
+            }
+            Trial t = judge(playCatch(end, from.loopCount(), new Choice(candidate.throwing(), style)), policy, rng, depth, null);
+            if (t.betterThan(best)) {
+                best = t;
+            }
+            if (best.good()) {
+                break;
+            }
+        }
+        return best;
+    }
+
+    /**
+     * From the twin's state now (a successful try's next decision), a throw that succeeds and
+     * leads on {@code depth - 1} throws further, or null: {@code hint} first when it was found from
+     * this very state, then the policy's throw and variations by the spread of round 1, up to
+     * {@code lookahead} in all.
+     */
+    private Continuation continuation(ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
+        CatchThrowEpisode.Checkpoint next = twin.checkpoint();
+        Observation state = twin.decision();
+        if (hint != null && hint.state().sameValues(state)) {
+            Trial t = judge(play(next, hint.choice()), policy, rng, depth - 1, hint.next());
+            if (t.good()) {
+                return new Continuation(state, t.choice(), t.next());
+            }
+        }
+        ThrowParameters proposal = policy.decide(state);
+        double[] centre = space.toAction(proposal);
+        for (int j = 0; j < config.lookahead(); j++) {
+            ThrowParameters candidate = j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng));
+            Trial t = tryThrow(next, new Choice(candidate, config.catchStyle(j)), policy, rng, depth - 1);
+            if (t.good()) {
+                return new Continuation(state, t.choice(), t.next());
+            }
+        }
+        return null;
+    }
+
+    private static double[] vary(double[] centre, double spread, SplittableRandom rng) {
+        double[] a = centre.clone();
+        for (int i = 0; i < a.length; i++) {
+            a[i] += spread * gaussian(rng);
+        }
+        return a;
+    }
+
+    private static double gaussian(SplittableRandom rng) {
+        return Math.sqrt(-2 * Math.log(1 - rng.nextDouble())) * Math.cos(2 * Math.PI * rng.nextDouble());
+    }
+
+    /**
+     * Plays {@code candidate} out in the twin, from {@code from} to the next throw's decision (where
+     * the twin then waits) or the end of the episode. Without a lookahead a success counts as open.
+     */
+    private Trial play(CatchThrowEpisode.Checkpoint from, Choice candidate) {
+        tries++;
+        throwEnd = null;
+        twin.restore(from);
+        Observation next;
+        try {
+            twin.decide(candidate.decision());
+            if (!config.catchBranches().isEmpty() && twin.advanceToThrowEnd()) {
+                throwEnd = twin.checkpoint();
+            }
+            next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.advanceToDecision() : null;
+        } catch (SimulationDiverged e) {
+            return Trial.failed(candidate);
+        }
+        return played(from.loopCount(), candidate, next);
+    }
+
+    /**
+     * The catch of the throw that ended THROW at {@code end} played again from there, meeting the
+     * object as {@code candidate} says, to the next throw's decision or the end of the episode.
+     */
+    private Trial playCatch(CatchThrowEpisode.Checkpoint end, int loopCount, Choice candidate) {
+        tries++;
+        branches++;
+        twin.restore(end);
+        twin.meetComingCatchAs(candidate.catching());
+        Observation next;
+        try {
+            next = twin.advanceToDecision();
+        } catch (SimulationDiverged e) {
+            return Trial.failed(candidate);
+        }
+        return played(loopCount, candidate, next);
+    }
+
+    /** The try whose loop is the twin's loop {@code index}, waiting at {@code next} (null: the episode ended). */
+    private Trial played(int index, Choice candidate, Observation next) {
+        if (twin.loops().size() <= index) {
+            return Trial.failed(candidate);
+        }
+        LoopRecord made = twin.loops().get(index);
+        boolean success = next != null && task.success(made);
+        return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made, null);
+    }
+
+    /** |long axis . palm z| (1 for an object without a long axis): 1 when the object lies across the palm. */
+    private double alignment(Observation obs) {
+        var axis = twin.sim().objectSpec().longAxis();
+        if (axis.isEmpty()) {
+            return 1;
+        }
+        Vec3 a = obs.object().orientation().rotate(axis.get());
+        return Math.abs(a.dot(obs.palm().rotation().zAxis()));
+    }
+}
