@@ -12,7 +12,7 @@ import handsim.scene.SceneSetup;
 import handsim.task.ServoLoop;
 import handsim.scene.SwitchingScene;
 import handsim.viewer.ViewerConfig;
-import java.nio.file.Path;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -24,30 +24,14 @@ import picocli.CommandLine.Option;
  */
 final class SceneOptions {
 
+    @Mixin
+    ControllerOptions who;
+
+    @Mixin
+    EpisodeOptions episodeOptions;
+
     @Option(names = "--seconds", paramLabel = "S", defaultValue = "2", description = "simulated seconds (default: ${DEFAULT-VALUE})")
     double seconds;
-
-    @Option(names = "--seed", defaultValue = "1", description = "seed (default: ${DEFAULT-VALUE})")
-    long seed;
-
-    @Option(names = "--task", description = "height, box or flip: that task's catch-and-throw loop instead of "
-            + "the held ball (default with --controller: height)")
-    String task;
-
-    @Option(names = "--controller", description = "nominal or learned: the catch-and-throw loop instead of the "
-            + "held ball (default with --task: nominal)")
-    String controller;
-
-    @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file (default: the "
-            + "policy shipped for the task and object)")
-    Path policy;
-
-    @Option(names = "--plan", description = "flip: a throw planner chooses every throw, trying the controller's and variations "
-            + "of it in a twin world first (configs/planner.json)")
-    boolean plan;
-
-    @Option(names = "--object", defaultValue = "sphere", description = "with --task or --controller: sphere, can, cuboid or club")
-    String object;
 
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
@@ -61,17 +45,17 @@ final class SceneOptions {
 
     /** The scene asked for; {@code command} names the command in the notes printed. */
     Scene open(String command, ViewerConfig viewerConfig) {
-        if (controller == null && task == null && !plan) {
-            if (!object.equals("sphere")) {
+        if (!who.given()) {
+            if (!episodeOptions.object.equals("sphere")) {
                 throw new IllegalArgumentException("--object goes with --task or --controller (the held ball is a sphere), got "
-                        + object);
+                        + episodeOptions.object);
             }
-            HandModel model = Runtime.model(null);
-            Simulator sim = Runtime.simulator(model, Runtime.simConfig());
-            return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
+            HandModel model = Wiring.model(null);
+            Simulator sim = Wiring.simulator(model, Wiring.simConfig());
+            return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), Wiring.object("sphere"), 0.2, episodeOptions.seed));
         }
-        SceneSetup wanted = new SceneSetup(task == null ? "height" : task, object, controller == null ? "nominal" : controller, seed);
-        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), policy, plan, viewerConfig);
+        SceneSetup wanted = new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed);
+        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), who.policy, who.plan, viewerConfig);
         System.out.println("handsim " + command + ": " + describe(scene));
         return scene;
     }

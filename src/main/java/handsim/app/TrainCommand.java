@@ -97,10 +97,10 @@ final class TrainCommand implements Callable<Integer> {
                     + "with --set training.episodes=N");
         }
         TrainConfig c = resume == null ? load(config, overrides) : TrainRun.savedConfig(resume);
-        HandModel model = Runtime.model(null);
-        SimConfig simConfig = Runtime.simConfig();
+        HandModel model = Wiring.model(null);
+        SimConfig simConfig = Wiring.simConfig();
         ThrowEnvs envs = environments(c.run(), model);
-        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
+        try (Rollouts rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
             TrainRun run = resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
             tellLauncher(run.dir());
             run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
@@ -132,12 +132,12 @@ final class TrainCommand implements Callable<Integer> {
 
     /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
     static ThrowEnvs environments(TrainConfig.Run run, HandModel model) {
-        Tasks tasks = Runtime.tasks();
+        Tasks tasks = Wiring.tasks();
         ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
-        ControllerConfig cc = Runtime.controllerConfig();
-        ObjectSpec object = Runtime.object(run.object());
+        ControllerConfig cc = Wiring.controllerConfig();
+        ObjectSpec object = Wiring.object(run.object());
         return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
-                Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
+                Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
                 new StateVector(run.state(), object.longAxis()));
     }
@@ -177,7 +177,7 @@ final class TrainCommand implements Callable<Integer> {
         p.put("commit", Provenance.gitCommit());
         p.put("started", LocalDateTime.now().toString());
         p.put("java", System.getProperty("java.version"));
-        p.put("cores", java.lang.Runtime.getRuntime().availableProcessors());
+        p.put("cores", Runtime.getRuntime().availableProcessors());
         return p;
     }
 }

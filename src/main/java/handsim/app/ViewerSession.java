@@ -87,7 +87,7 @@ final class ViewerSession {
                 System.out.printf(Locale.ROOT, "%sbenchmark: %d frames in %.2f s after a %.1f s warm-up: mean %.1f FPS; "
                         + "real-time factor %.3f (%.2f simulated s, h = %.1f ms); %dx%d, %s%n", prefix, stats.frames(),
                         stats.wallSeconds(), warmup, stats.fps(), stats.realTimeFactor(), stats.simSeconds(),
-                        Runtime.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
+                        Wiring.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
             }
         }
         return 0;

@@ -41,9 +41,9 @@ final class WarmstartCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         Warmstart.Config c = Warmstart.Config.load(config);
-        HandModel model = Runtime.model(null);
+        HandModel model = Wiring.model(null);
         ThrowEnvs envs = TrainCommand.environments(c.train().run(), model);
-        Tasks tasks = Runtime.tasks();
+        Tasks tasks = Wiring.tasks();
         double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
         Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
@@ -56,7 +56,7 @@ final class WarmstartCommand implements Callable<Integer> {
                 + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
                 c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());
         List<Warmstart.Search> searches;
-        try (Rollouts rollouts = Runtime.rollouts(model, Runtime.simConfig(), c.train().run().workers())) {
+        try (Rollouts rollouts = Wiring.rollouts(model, Wiring.simConfig(), c.train().run().workers())) {
             searches = Warmstart.search(c, envs, nominal, rollouts, System.out);
         }
         ArrayNode all = Json.mapper().createArrayNode();

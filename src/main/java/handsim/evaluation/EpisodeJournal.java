@@ -1,5 +1,13 @@
 package handsim.evaluation;
 
+import handsim.config.Home;
+import handsim.config.ReadLog;
+import handsim.rollout.RolloutTask;
+import java.util.List;
+import java.util.SortedMap;
+import java.util.TreeMap;
+import java.util.function.Function;
+
 import handsim.report.Outputs;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
@@ -31,6 +39,9 @@ import java.util.Optional;
  * is deleted.
  */
 public final class EpisodeJournal {
+
+    /** Episodes this run finished itself (the others were read back). */
+    private int newlyFinished;
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
 
@@ -132,6 +143,54 @@ public final class EpisodeJournal {
     /** How many episodes interrupted runs of the same command finished. */
     public synchronized int finished() {
         return done.size();
+    }
+
+    /** Episodes this run read back from the journal instead of running them. */
+    public synchronized int resumed() {
+        return done.size() - newlyFinished;
+    }
+
+    /**
+     * {@code task} that reads an episode back from this journal when an interrupted run of the
+     * same command finished it, and otherwise runs it and journals its result at once.
+     */
+    public <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return sim -> {
+            RolloutTask.Rollout<R> rollout = task.prepare(sim);
+            return i -> {
+                Optional<JsonNode> earlier = result(i);
+                if (earlier.isPresent()) {
+                    return read.apply(earlier.get());
+                }
+                R result = rollout.run(i);
+                append(i, write.apply(result));
+                synchronized (this) {
+                    newlyFinished++;
+                }
+                return result;
+            };
+        };
+    }
+
+    /**
+     * The SHA-256 of every file under configs/ and models/ and of {@code others} (those that
+     * exist), by path: what a run's signature holds of its inputs.
+     */
+    public static SortedMap<String, String> inputHashes(List<Path> others) throws IOException {
+        SortedMap<String, String> hashes = new TreeMap<>();
+        for (String dir : List.of("configs", "models")) {
+            try (var walk = Files.walk(Home.resolve(dir))) {
+                for (Path f : walk.filter(Files::isRegularFile).toList()) {
+                    hashes.put(Home.root().relativize(f).toString(), ReadLog.sha256(Files.readAllBytes(f)));
+                }
+            }
+        }
+        for (Path f : others) {
+            if (f != null && Files.isRegularFile(f)) {
+                hashes.put(f.toAbsolutePath().normalize().toString(), ReadLog.sha256(Files.readAllBytes(f)));
+            }
+        }
+        return hashes;
     }
 
     /** Lines an interrupted run left unfinished (cut short by a kill) and that were dropped. */

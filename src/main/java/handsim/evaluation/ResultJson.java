@@ -81,7 +81,7 @@ public final class ResultJson {
         return new EpisodeResult(o.get("seed").asLong(), loops(o.get("loops")), CatchThrowEpisode.Status.valueOf(o.get("status").asText()));
     }
 
-    public static ObjectNode boxTest(BoxTrials.Test t) {
+    public static ObjectNode boxTrial(BoxTrials.Trial t) {
         ObjectNode o = F.objectNode();
         o.put("index", t.index());
         o.put("seed", t.seed());
@@ -92,8 +92,8 @@ public final class ResultJson {
         return o;
     }
 
-    public static BoxTrials.Test boxTest(JsonNode o) {
-        return new BoxTrials.Test(o.get("index").asInt(), o.get("seed").asLong(), vec(o.get("box")), number(o, "distance"),
+    public static BoxTrials.Trial boxTrial(JsonNode o) {
+        return new BoxTrials.Trial(o.get("index").asInt(), o.get("seed").asLong(), vec(o.get("box")), number(o, "distance"),
                 o.get("success").asBoolean(), o.get("in_a_row").asInt());
     }
 

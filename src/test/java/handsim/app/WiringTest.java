@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The shipped planner settings per object, read from a home of the test's own. */
-class RuntimeTest {
+class WiringTest {
 
     @Test
     void plannerSettingsForAnObjectThatDoesNotExistAreRefusedByName(@TempDir Path home) throws Exception {
@@ -25,11 +25,11 @@ class RuntimeTest {
         System.setProperty("handsim.home", home.toString());
         try {
             Files.writeString(home.resolve("configs/planner.json"), planner.formatted("\"club\""));
-            assertEquals(3, Runtime.plannerConfig("club").lookahead());
-            assertEquals(0, Runtime.plannerConfig("can").lookahead(), "an object without an entry keeps the file's settings");
+            assertEquals(3, Wiring.plannerConfig("club").lookahead());
+            assertEquals(0, Wiring.plannerConfig("can").lookahead(), "an object without an entry keeps the file's settings");
 
             Files.writeString(home.resolve("configs/planner.json"), planner.formatted("\"clb\""));
-            var e = assertThrows(ConfigException.class, () -> Runtime.plannerConfig("club"));
+            var e = assertThrows(ConfigException.class, () -> Wiring.plannerConfig("club"));
             assertTrue(e.getMessage().contains("objects.clb") && e.getMessage().contains("no such object"), e.getMessage());
         } finally {
             if (before == null) {

@@ -26,9 +26,9 @@ import handsim.task.LaunchDistribution;
 import java.nio.file.Path;
 
 /** Loads the shipped model and configs and builds the engine: the wiring every command shares. */
-final class Runtime {
+final class Wiring {
 
-    private Runtime() {
+    private Wiring() {
     }
 
     static HandModel model(Path file) {
