@@ -57,14 +57,14 @@ public final class TestSupport {
     }
 
     /** Height task environments over the shipped configs, with actions mapped onto {@code space}. */
-    public static handsim.train.ThrowEnvs heightEnvs(handsim.control.ThrowSpace space) {
+    public static handsim.train.ThrowEnvFactory heightEnvs(handsim.control.ThrowSpace space) {
         return heightEnvs(space, false);
     }
 
     /** The same, ending an episode at the first throw that misses its goal when {@code endAtFailedThrow}. */
-    public static handsim.train.ThrowEnvs heightEnvs(handsim.control.ThrowSpace space, boolean endAtFailedThrow) {
+    public static handsim.train.ThrowEnvFactory heightEnvs(handsim.control.ThrowSpace space, boolean endAtFailedThrow) {
         handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
-        return new handsim.train.ThrowEnvs("height", object("sphere"), () -> heightTask(null), cc,
+        return new handsim.train.ThrowEnvFactory("height", object("sphere"), () -> heightTask(null), cc,
                 handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), space,
                 new handsim.train.ThrowEnv.Settings(5, -1, handsim.train.SpinShaping.NONE, endAtFailedThrow),

@@ -175,7 +175,7 @@ final class BenchCommand implements Callable<Integer> {
                 sampler.start();
             }
         });
-        try (Rollouts rollouts = Wiring.rollouts(model, config, n)) {
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, config, n)) {
             return rollouts.run(n, sim -> worker -> {
                 if (sampler != null) {
                     sampler.register();

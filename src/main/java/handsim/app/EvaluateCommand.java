@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
@@ -154,7 +156,7 @@ final class EvaluateCommand implements Callable<Integer> {
         EvaluationSetup setup = new EvaluationSetup(Wiring.controllerConfig(), Wiring.object(object), Wiring.tasks(),
                 Wiring.episodeLimits(), Wiring.launches(), config, throwPolicies(), who.plan ? Wiring.plannerConfig(object) : null,
                 Wiring::twinSimulator, exported, journal, System.out);
-        try (Rollouts rollouts = Wiring.rollouts(Wiring.model(null), Wiring.simConfig(), workers)) {
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(Wiring.model(null), Wiring.simConfig(), workers)) {
             TaskEvaluation.of(request, setup).run(rollouts, out);
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);

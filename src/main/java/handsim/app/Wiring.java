@@ -14,7 +14,7 @@ import handsim.sim.ode.OdeSimulator;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.evaluation.CatchEvaluation;
-import handsim.evaluation.ThrowPlanner;
+import handsim.evaluation.PlannerConfig;
 import handsim.task.EpisodeLimits;
 import handsim.kin.Kinematics;
 import handsim.math.Vec3;
@@ -97,7 +97,7 @@ final class Wiring {
      * {@code configs/planner.json}, with {@code object}'s own settings if it has some; an entry
      * under {@code objects} for an object that {@code configs/objects/} lacks is refused by name.
      */
-    static ThrowPlanner.Config plannerConfig(String object) {
+    static PlannerConfig plannerConfig(String object) {
         Json file = Json.load(Home.resolve("configs/planner.json"));
         if (file.has("objects")) {
             Json objects = file.get("objects");
@@ -108,7 +108,7 @@ final class Wiring {
                 }
             }
         }
-        return ThrowPlanner.Config.parse(file, object);
+        return PlannerConfig.parse(file, object);
     }
 
     /** A twin of {@code sim} for a planner: the same model and config, on an engine of its own. */
@@ -117,7 +117,7 @@ final class Wiring {
     }
 
     /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */
-    static Rollouts rollouts(HandModel model, SimConfig config, int workers) {
-        return new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config));
+    static Rollouts<Simulator> rollouts(HandModel model, SimConfig config, int workers) {
+        return new LocalRollouts<>(workers, () -> IsolatedEngine.simulator(model, config));
     }
 }

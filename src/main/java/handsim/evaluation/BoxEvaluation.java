@@ -1,5 +1,7 @@
 package handsim.evaluation;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
@@ -23,7 +25,7 @@ final class BoxEvaluation extends TaskEvaluation {
     }
 
     @Override
-    public void run(Rollouts rollouts, ObjectNode out) throws IOException {
+    public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
         String object = request.object();
         BoxTask reference = (BoxTask) setup.tasks().create("box", object);
         int required = reference.config().loopsRequired();

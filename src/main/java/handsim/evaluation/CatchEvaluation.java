@@ -59,7 +59,7 @@ public final class CatchEvaluation {
     private final ThrowPolicy throwPolicy;
     private final ThrowTask task;
     /** Non-null when every throw is planned in a twin world ({@link #planned}). */
-    private ThrowPlanner.Config planning;
+    private PlannerConfig planning;
     private Simulator twin;
     /** The planner's work in the episodes before the running one. */
     private ThrowPlanner.Stats earlierEpisodes = ThrowPlanner.Stats.NONE;
@@ -92,7 +92,7 @@ public final class CatchEvaluation {
      * model and config with an engine of its own, and the hand makes the best. The caller closes
      * {@code twin}.
      */
-    public CatchEvaluation planned(ThrowPlanner.Config config, Simulator twin) {
+    public CatchEvaluation planned(PlannerConfig config, Simulator twin) {
         ThrowPlanner.requirePlannable(task);
         CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
         e.planning = config;

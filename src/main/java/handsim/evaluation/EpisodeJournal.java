@@ -154,9 +154,9 @@ public final class EpisodeJournal {
      * {@code task} that reads an episode back from this journal when an interrupted run of the
      * same command finished it, and otherwise runs it and journals its result at once.
      */
-    public <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
-        return sim -> {
-            RolloutTask.Rollout<R> rollout = task.prepare(sim);
+    public <W, R> RolloutTask<W, R> resumable(RolloutTask<W, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return worker -> {
+            RolloutTask.Rollout<R> rollout = task.prepare(worker);
             return i -> {
                 Optional<JsonNode> earlier = result(i);
                 if (earlier.isPresent()) {

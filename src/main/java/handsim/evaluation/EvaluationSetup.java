@@ -26,6 +26,6 @@ import java.util.function.UnaryOperator;
  */
 public record EvaluationSetup(ControllerConfig controller, ObjectSpec object, Tasks tasks, EpisodeLimits limits,
         LaunchDistribution launches, EvaluationConfig config, Function<ThrowTask, ThrowPolicy> policies,
-        ThrowPlanner.Config planning, UnaryOperator<Simulator> twins, CatchEvaluation.TickWatcher watcher, EpisodeJournal journal,
+        PlannerConfig planning, UnaryOperator<Simulator> twins, CatchEvaluation.TickWatcher watcher, EpisodeJournal journal,
         PrintStream console) {
 }

@@ -90,10 +90,10 @@ final class FlipEvaluation extends TaskEvaluation {
     }
 
     @Override
-    public void run(Rollouts rollouts, ObjectNode out) throws IOException {
+    public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
         Tasks tasks = setup.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
-        ThrowPlanner.Config planning = setup.planning();
+        PlannerConfig planning = setup.planning();
         List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
         List<FlipRun> runs;
         try {
@@ -268,7 +268,7 @@ final class FlipEvaluation extends TaskEvaluation {
     }
 
     /** The planner's settings and its work over all episodes, printed and in the JSON. */
-    private void putPlannerStats(ObjectNode out, ThrowPlanner.Config planning, ThrowPlanner.Stats s) {
+    private void putPlannerStats(ObjectNode out, PlannerConfig planning, ThrowPlanner.Stats s) {
         ObjectNode o = out.putObject("planner");
         ArrayNode rounds = o.putArray("rounds");
         planning.rounds().forEach(r -> putStyles(rounds.addObject().put("candidates", r.candidates()).put("spread", r.spread())

@@ -1,5 +1,7 @@
 package handsim.evaluation;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -22,7 +24,7 @@ final class HeightEvaluation extends TaskEvaluation {
     }
 
     @Override
-    public void run(Rollouts rollouts, ObjectNode out) throws IOException {
+    public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
         StringBuilder rows = new StringBuilder("episode_seed,loop,caught,apex_m,target_apex_m,landing_x,landing_y,landing_z,"
                 + "max_penetration_mm,max_limit_excess_deg,peak_torque_ratio,duration_s\n");
         long seed = request.seed();

@@ -1,5 +1,7 @@
 package handsim.evaluation;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -51,7 +53,7 @@ final class SensitivityEvaluation extends TaskEvaluation {
     }
 
     @Override
-    public void run(Rollouts rollouts, ObjectNode out) throws IOException {
+    public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
         Tasks tasks = setup.tasks();
         ObjectSpec spec = setup.object();
         List<List<Vec3>> nudges = new ArrayList<>();

@@ -1,5 +1,7 @@
 package handsim.evaluation;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
@@ -42,7 +44,7 @@ public abstract class TaskEvaluation {
     }
 
     /** Runs the episodes on {@code rollouts} and puts the summary into {@code out}. */
-    public abstract void run(Rollouts rollouts, ObjectNode out) throws IOException;
+    public abstract void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException;
 
     /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */
     protected CatchEvaluation evaluation(ThrowTask task) {
@@ -66,7 +68,7 @@ public abstract class TaskEvaluation {
      * command finished it, and otherwise runs it and journals its result at once (without a
      * journal, {@code task} itself).
      */
-    protected <R> RolloutTask<R> resumable(RolloutTask<R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+    protected <R> RolloutTask<Simulator, R> resumable(RolloutTask<Simulator, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
         return setup.journal() == null ? task : setup.journal().resumable(task, write, read);
     }
 

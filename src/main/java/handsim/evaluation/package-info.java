@@ -9,8 +9,9 @@
  * each writes its summary (JSON, CSV, console, PNG) and journals finished episodes so that a
  * killed run resumes ({@link handsim.evaluation.EpisodeJournal}).
  *
- * <p>Imports {@code handsim.task} and what it stands on, {@code handsim.rollout} (parallel
- * episodes), {@code handsim.report} (charts, atomic files) and Jackson; never an engine (a twin
- * simulator is handed in), picocli or the app.
+ * <p>Imports {@code handsim.task} and what it stands on ({@code handsim.math}, {@code
+ * handsim.config}, {@code handsim.model}, {@code handsim.kin}, {@code handsim.sim}, {@code
+ * handsim.control}), {@code handsim.rollout} (parallel episodes), {@code handsim.report} (charts,
+ * atomic files) and Jackson; never an engine (a twin simulator is handed in), picocli or the app.
  */
 package handsim.evaluation;

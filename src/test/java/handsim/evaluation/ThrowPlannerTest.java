@@ -36,7 +36,7 @@ class ThrowPlannerTest {
     static final long NOMINAL_FAILS = 103;
 
     private final ControllerConfig controller = ControllerConfig.load(Home.resolve("configs/controller.json"));
-    private final ThrowPlanner.Config shipped = ThrowPlanner.Config.parse(Json.load(Home.resolve("configs/planner.json")));
+    private final PlannerConfig shipped = PlannerConfig.parse(Json.load(Home.resolve("configs/planner.json")));
 
     /**
      * A seed whose club throw-in the controller's own catch (0, 0.7) drops, as does one at (0.2,
@@ -127,7 +127,7 @@ class ThrowPlannerTest {
 
     @Test
     void aLookaheadPlaysThrowsFromEachSuccessfulTrysNextStateAndStillChoosesSuccesses() {
-        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
+        PlannerConfig withLookahead = new PlannerConfig(shipped.rounds(), shipped.goodAlignment(), 4);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation plain = nominalFlip().planned(shipped, twin);
             CatchEvaluation looking = nominalFlip().planned(withLookahead, twin);
@@ -144,7 +144,7 @@ class ThrowPlannerTest {
 
     @Test
     void theThrowALookaheadFoundIsTriedFirstWhenTheLiveHandGetsThereAndSucceeds() {
-        ThrowPlanner.Config withLookahead = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
+        PlannerConfig withLookahead = new PlannerConfig(shipped.rounds(), shipped.goodAlignment(), 4);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation looking = nominalFlip().planned(withLookahead, twin);
             assertEquals(3, looking.successesInARow(looking.runWhileSuccessful(live, NOMINAL_FAILS, 3)));
@@ -168,7 +168,7 @@ class ThrowPlannerTest {
     void theLiveCatchMeetsTheObjectAsTheChosenTrysCatchDidInTheTwin() {
         // neither style is the controller's own (0, 0.7): a live catch made as the controller's own would differ
         List<CatchStyle> styles = List.of(new CatchStyle(0.05, 0.5), new CatchStyle(-0.03, 0.6));
-        ThrowPlanner.Config withStyles = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 0, styles, List.of(), List.of(), 1);
+        PlannerConfig withStyles = new PlannerConfig(shipped.rounds(), shipped.goodAlignment(), 0, styles, List.of(), List.of(), 1);
         assertEquals(styles.get(0), withStyles.catchStyle(0));
         assertEquals(styles.get(1), withStyles.catchStyle(3), "try k is caught with style k mod 2");
         try (Simulator live = engine(); Simulator twin = engine()) {
@@ -181,8 +181,8 @@ class ThrowPlannerTest {
 
             // the same styles given to each round (24 tries, an even number: round try c is search try k = c
             // or 24 + c, caught alike) make the same choices, loop for loop
-            ThrowPlanner.Config roundStyles = new ThrowPlanner.Config(shipped.rounds().stream()
-                    .map(r -> new ThrowPlanner.Round(r.candidates(), r.spread(), styles)).toList(), shipped.goodAlignment(), 0);
+            PlannerConfig roundStyles = new PlannerConfig(shipped.rounds().stream()
+                    .map(r -> new PlannerConfig.Round(r.candidates(), r.spread(), styles)).toList(), shipped.goodAlignment(), 0);
             CatchEvaluation byRound = nominalFlip().planned(roundStyles, twin);
             assertEquals(loops, byRound.runWhileSuccessful(live, NOMINAL_FAILS, 2));
             CatchEvaluation unstyled = nominalFlip().planned(shipped, twin);
@@ -193,7 +193,7 @@ class ThrowPlannerTest {
     @Test
     void aThrowInTheControllersOwnCatchDropsIsCaughtAsATwinTriedCatchHeldIt() {
         List<CatchStyle> throwIn = List.of(new CatchStyle(0.2, 0.7), new CatchStyle(0, 0.4));
-        ThrowPlanner.Config restyling = new ThrowPlanner.Config(List.of(new ThrowPlanner.Round(1, 0.05)),
+        PlannerConfig restyling = new PlannerConfig(List.of(new PlannerConfig.Round(1, 0.05)),
                 shipped.goodAlignment(), 0, List.of(), throwIn, List.of(), 1);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation unplanned = nominalFlip("club");
@@ -222,49 +222,49 @@ class ThrowPlannerTest {
     void anObjectsOwnRoundsAndLookaheadReplaceTheFilesForThatObjectOnly() {
         Json file = Json.parse("planner.json", "{\"rounds\": [{\"candidates\": 24, \"spread\": 0.1}, {\"candidates\": 24, \"spread\": 0.3}], "
                 + "\"goodAlignment\": 0.9, \"lookahead\": 2, \"objects\": {\"club\": {\"rounds\": [{\"candidates\": 60, \"spread\": 0.05}]}}}");
-        ThrowPlanner.Config can = ThrowPlanner.Config.parse(file, "can");
-        assertEquals(List.of(new ThrowPlanner.Round(24, 0.1), new ThrowPlanner.Round(24, 0.3)), can.rounds());
+        PlannerConfig can = PlannerConfig.parse(file, "can");
+        assertEquals(List.of(new PlannerConfig.Round(24, 0.1), new PlannerConfig.Round(24, 0.3)), can.rounds());
         assertEquals(48, can.maxTries());
-        ThrowPlanner.Config club = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()), "club");
-        assertEquals(List.of(new ThrowPlanner.Round(60, 0.05)), club.rounds());
+        PlannerConfig club = PlannerConfig.parse(Json.parse("planner.json", file.node().toString()), "club");
+        assertEquals(List.of(new PlannerConfig.Round(60, 0.05)), club.rounds());
         assertEquals(0.9, club.goodAlignment());
-        assertEquals(0.5, ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+        assertEquals(0.5, PlannerConfig.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"club\":{", "\"club\":{\"goodAlignment\":0.5,")), "club").goodAlignment(), "an object's own replaces the file's");
         assertEquals(2, club.lookahead(), "the file's other settings hold for the club too");
-        ThrowPlanner.Config looking = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+        PlannerConfig looking = PlannerConfig.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"club\":{", "\"club\":{\"lookahead\":7,")), "club");
         assertEquals(7, looking.lookahead(), "an object's own lookahead replaces the file's");
         assertEquals(club.rounds(), looking.rounds());
         assertEquals(List.of(), club.catchStyles(), "no styles: every try caught as the controller's own");
         assertNull(club.catchStyle(0));
-        ThrowPlanner.Config styled = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+        PlannerConfig styled = PlannerConfig.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"club\":{", "\"club\":{\"catchStyles\":[{\"planeShift\":0.1,\"velocityFraction\":0.45}],")), "club");
         assertEquals(List.of(new CatchStyle(0.1, 0.45)), styled.catchStyles());
-        ThrowPlanner.Config roundStyled = ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+        PlannerConfig roundStyled = PlannerConfig.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"spread\":0.05}", "\"spread\":0.05,\"catchStyles\":[{\"planeShift\":0,\"velocityFraction\":0.5}]}")), "club");
-        assertEquals(List.of(new ThrowPlanner.Round(60, 0.05, List.of(new CatchStyle(0, 0.5)))), roundStyled.rounds());
-        assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", file.node().toString()
+        assertEquals(List.of(new PlannerConfig.Round(60, 0.05, List.of(new CatchStyle(0, 0.5)))), roundStyled.rounds());
+        assertEquals(List.of(), PlannerConfig.parse(Json.parse("planner.json", file.node().toString()
                 .replace("\"club\":{", "\"club\":{\"catchStyles\":[{\"planeShift\":0.1,\"velocityFraction\":0.45}],")), "can")
                 .catchStyles(), "the club's styles are the club's only");
         String throwIns = file.node().toString().replace("\"club\":{", "\"club\":{\"throwInStyles\":[{\"planeShift\":0.25,\"velocityFraction\":0.5}],");
-        assertEquals(List.of(new CatchStyle(0.25, 0.5)), ThrowPlanner.Config.parse(Json.parse("planner.json", throwIns), "club")
+        assertEquals(List.of(new CatchStyle(0.25, 0.5)), PlannerConfig.parse(Json.parse("planner.json", throwIns), "club")
                 .throwInStyles());
-        assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", throwIns), "can").throwInStyles(),
+        assertEquals(List.of(), PlannerConfig.parse(Json.parse("planner.json", throwIns), "can").throwInStyles(),
                 "no throw-in styles: the throw-in is caught as the controller's own");
         String branching = file.node().toString().replace("\"club\":{", "\"club\":{\"catchBranches\":[{\"planeShift\":0,\"velocityFraction\":0.5}],");
-        assertEquals(List.of(new CatchStyle(0, 0.5)), ThrowPlanner.Config.parse(Json.parse("planner.json", branching), "club")
+        assertEquals(List.of(new CatchStyle(0, 0.5)), PlannerConfig.parse(Json.parse("planner.json", branching), "club")
                 .catchBranches());
-        assertEquals(List.of(), ThrowPlanner.Config.parse(Json.parse("planner.json", branching), "can").catchBranches(),
+        assertEquals(List.of(), PlannerConfig.parse(Json.parse("planner.json", branching), "can").catchBranches(),
                 "no branches: each tried throw is caught one way");
         String deep = file.node().toString().replace("\"club\":{", "\"club\":{\"lookaheadDepth\":2,");
-        assertEquals(2, ThrowPlanner.Config.parse(Json.parse("planner.json", deep), "club").lookaheadDepth());
-        assertEquals(1, ThrowPlanner.Config.parse(Json.parse("planner.json", deep), "can").lookaheadDepth(),
+        assertEquals(2, PlannerConfig.parse(Json.parse("planner.json", deep), "club").lookaheadDepth());
+        assertEquals(1, PlannerConfig.parse(Json.parse("planner.json", deep), "can").lookaheadDepth(),
                 "without one a lookahead looks one throw ahead");
-        var badDeep = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+        var badDeep = assertThrows(ConfigException.class, () -> PlannerConfig.parse(Json.parse("planner.json",
                 deep.replace("\"lookaheadDepth\":2", "\"lookaheadDepth\":0")), "can"));
         assertTrue(badDeep.getMessage().contains("objects.club.lookaheadDepth") && badDeep.getMessage().contains("0"),
                 badDeep.getMessage());
-        var badBranch = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+        var badBranch = assertThrows(ConfigException.class, () -> PlannerConfig.parse(Json.parse("planner.json",
                 branching.replace("\"velocityFraction\":0.5", "\"velocityFraction\":1.5")), "can"));
         assertTrue(badBranch.getMessage().contains("velocityFraction") && badBranch.getMessage().contains("1.5"), badBranch.getMessage());
     }
@@ -296,7 +296,7 @@ class ThrowPlannerTest {
 
     @Test
     void aFailedTrysCatchIsPlayedAgainWithABranchStyleAndTheLiveHandCatchesAsTheBranchDid() {
-        ThrowPlanner.Config one = new ThrowPlanner.Config(List.of(new ThrowPlanner.Round(1, 0.05)), shipped.goodAlignment(), 0);
+        PlannerConfig one = new PlannerConfig(List.of(new PlannerConfig.Round(1, 0.05)), shipped.goodAlignment(), 0);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation unbranched = nominalFlip("club").planned(one, twin);
             assertEquals(0, unbranched.successesInARow(unbranched.runWhileSuccessful(live, CLUB_BRANCH_SEED, 1)),
@@ -318,8 +318,8 @@ class ThrowPlannerTest {
 
     @Test
     void aLookaheadTwoThrowsDeepKeepsBothThrowsAndTriesThemFirst() {
-        ThrowPlanner.Config oneDeep = new ThrowPlanner.Config(shipped.rounds(), shipped.goodAlignment(), 4);
-        ThrowPlanner.Config twoDeep = oneDeep.withLookaheadDepth(2);
+        PlannerConfig oneDeep = new PlannerConfig(shipped.rounds(), shipped.goodAlignment(), 4);
+        PlannerConfig twoDeep = oneDeep.withLookaheadDepth(2);
         try (Simulator live = engine(); Simulator twin = engine()) {
             CatchEvaluation one = nominalFlip().planned(oneDeep, twin);
             CatchEvaluation two = nominalFlip().planned(twoDeep, twin);
@@ -351,14 +351,14 @@ class ThrowPlannerTest {
         CatchEvaluation height = CatchLoopTest.evaluation();
         var e = assertThrows(IllegalArgumentException.class, () -> height.planned(shipped, null));
         assertTrue(e.getMessage().contains("height"), e.getMessage());
-        var bad = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+        var bad = assertThrows(ConfigException.class, () -> PlannerConfig.parse(Json.parse("planner.json",
                 "{\"rounds\": [{\"candidates\": 0, \"spread\": 0.1}], \"goodAlignment\": 0.9, \"lookahead\": 0}")));
         assertTrue(bad.getMessage().contains("candidates") && bad.getMessage().contains("0"), bad.getMessage());
-        var none = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+        var none = assertThrows(ConfigException.class, () -> PlannerConfig.parse(Json.parse("planner.json",
                 "{\"rounds\": [], \"goodAlignment\": 0.9, \"lookahead\": 0}")));
         assertTrue(none.getMessage().contains("rounds"), none.getMessage());
         // an object's entry is checked even when another object is planned for
-        var badObject = assertThrows(ConfigException.class, () -> ThrowPlanner.Config.parse(Json.parse("planner.json",
+        var badObject = assertThrows(ConfigException.class, () -> PlannerConfig.parse(Json.parse("planner.json",
                 "{\"rounds\": [{\"candidates\": 4, \"spread\": 0.1}], \"goodAlignment\": 0.9, \"lookahead\": 0, "
                         + "\"objects\": {\"club\": {\"rounds\": [{\"candidates\": 4, \"spreed\": 0.1}]}}}"), "can"));
         assertTrue(badObject.getMessage().contains("objects.club.rounds[0]"), badObject.getMessage());

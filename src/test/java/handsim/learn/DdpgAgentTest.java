@@ -118,7 +118,7 @@ class DdpgAgentTest {
 
     @Test
     void optionalL2AndClippingReachTheNetworks() {
-        TrainingConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
+        LearnerConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
                 "ddpg.actorHidden", "[32]").ddpg();
         DdpgAgent agent = DdpgAgent.create(c, 3, 2, 1);
         var criticLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.critic.getLayerWiseConfigurations()

@@ -25,7 +25,7 @@ class PolicyTest {
     }
 
     /** An agent of config {@code c} after 20 updates on 64 random transitions. */
-    static DdpgAgent trainedAgent(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+    static DdpgAgent trainedAgent(LearnerConfig.Ddpg c, int obsSize, int actionSize, long seed) {
         DdpgAgent agent = DdpgAgent.create(c, obsSize, actionSize, seed);
         Rng rng = new Rng(seed);
         for (int i = 0; i < 64; i++) {

@@ -23,7 +23,7 @@ class ThrowEnvTest {
 
     private final ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
 
-    private static ThrowEnvs envs(ThrowSpace space) {
+    private static ThrowEnvFactory envs(ThrowSpace space) {
         return TestSupport.heightEnvs(space);
     }
 

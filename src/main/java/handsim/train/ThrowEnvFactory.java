@@ -17,7 +17,7 @@ import java.util.function.Supplier;
  *
  * @param tasks a fresh task per environment (tasks hold an episode's goals)
  */
-public record ThrowEnvs(String task, ObjectSpec object, Supplier<ThrowTask> tasks, ControllerConfig controller,
+public record ThrowEnvFactory(String task, ObjectSpec object, Supplier<ThrowTask> tasks, ControllerConfig controller,
         EpisodeLimits limits, LaunchDistribution launches, ThrowSpace space, ThrowEnv.Settings settings, StateVector state) {
 
     /** An environment on {@code sim} (which it owns from then on). */

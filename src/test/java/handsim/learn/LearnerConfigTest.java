@@ -12,15 +12,15 @@ class TrainingConfigTest {
 
     @Test
     void defaultsParseAndRoundTripThroughJson() {
-        TrainingConfig c = LearnTestSupport.config();
+        LearnerConfig c = LearnTestSupport.config();
         assertEquals(java.util.List.of(64, 64), c.ddpg().actorHidden(), "paper sec. 3.7: two layers of 64");
-        assertEquals(c, TrainingConfig.parse(Json.of("round trip", c.toJson())));
-        assertEquals(TrainingConfig.Td3.OFF, c.ddpg().td3(), "no td3 block: plain DDPG");
+        assertEquals(c, LearnerConfig.parse(Json.of("round trip", c.toJson())));
+        assertEquals(LearnerConfig.Td3.OFF, c.ddpg().td3(), "no td3 block: plain DDPG");
         assertTrue(!c.toJson().get("ddpg").has("td3"), "and plain DDPG writes none back");
-        TrainingConfig t = LearnTestSupport.config("ddpg.td3",
+        LearnerConfig t = LearnTestSupport.config("ddpg.td3",
                 "{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}");
-        assertEquals(new TrainingConfig.Td3(true, 2, 0.2, 0.5), t.ddpg().td3());
-        assertEquals(t, TrainingConfig.parse(Json.of("round trip", t.toJson())));
+        assertEquals(new LearnerConfig.Td3(true, 2, 0.2, 0.5), t.ddpg().td3());
+        assertEquals(t, LearnerConfig.parse(Json.of("round trip", t.toJson())));
     }
 
     @Test
@@ -41,17 +41,17 @@ class TrainingConfigTest {
     @Test
     void unknownAndMissingFieldsAreRejected() {
         Json j = Json.parse("t", "{\"seed\": 1, \"ddpg\": {}}");
-        ConfigException e = assertThrows(ConfigException.class, () -> TrainingConfig.parse(j));
+        ConfigException e = assertThrows(ConfigException.class, () -> LearnerConfig.parse(j));
         assertTrue(e.getMessage().contains("ddpg.actorHidden") && e.getMessage().contains("missing"), e.getMessage());
         var node = LearnTestSupport.config().toJson();
         ((com.fasterxml.jackson.databind.node.ObjectNode) node.get("training")).put("episodez", 3);
-        e = assertThrows(ConfigException.class, () -> TrainingConfig.parse(Json.of("t", node)));
+        e = assertThrows(ConfigException.class, () -> LearnerConfig.parse(Json.of("t", node)));
         assertTrue(e.getMessage().contains("training.episodez"), e.getMessage());
     }
 
     @Test
     void noiseScaleDecaysLinearly() {
-        TrainingConfig.Exploration x = LearnTestSupport.config("exploration.sigma", "0.3", "exploration.sigmaFinal", "0.1",
+        LearnerConfig.Exploration x = LearnTestSupport.config("exploration.sigma", "0.3", "exploration.sigmaFinal", "0.1",
                 "exploration.sigmaDecaySteps", "100").exploration();
         assertEquals(0.3, x.sigmaAt(0), 1e-15);
         assertEquals(0.2, x.sigmaAt(50), 1e-15);

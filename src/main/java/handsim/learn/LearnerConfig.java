@@ -16,16 +16,16 @@ import java.util.Locale;
  * @param seed the root seed; every generator of a run (weight init, replay sampling, episode and
  *     noise seeds) is derived from it ({@link DdpgAgent}, {@link Trainer})
  */
-public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Training training, Pretrain pretrain,
+public record LearnerConfig(long seed, Ddpg ddpg, Exploration exploration, Training training, Pretrain pretrain,
         Cmaes cmaes) {
 
-    public static TrainingConfig load(Path file) {
+    public static LearnerConfig load(Path file) {
         return parse(Json.load(file));
     }
 
-    public static TrainingConfig parse(Json j) {
+    public static LearnerConfig parse(Json j) {
         j.allow("comment");
-        TrainingConfig c = new TrainingConfig(j.longValue("seed"), Ddpg.parse(j.get("ddpg")),
+        LearnerConfig c = new LearnerConfig(j.longValue("seed"), Ddpg.parse(j.get("ddpg")),
                 Exploration.parse(j.get("exploration")), Training.parse(j.get("training")),
                 Pretrain.parse(j.get("pretrain")), Cmaes.parse(j.get("cmaes")));
         j.requireNoUnknownFields();
@@ -48,8 +48,8 @@ public record TrainingConfig(long seed, Ddpg ddpg, Exploration exploration, Trai
         return node;
     }
 
-    public TrainingConfig withSeed(long newSeed) {
-        return new TrainingConfig(newSeed, ddpg, exploration, training, pretrain, cmaes);
+    public LearnerConfig withSeed(long newSeed) {
+        return new LearnerConfig(newSeed, ddpg, exploration, training, pretrain, cmaes);
     }
 
     /**

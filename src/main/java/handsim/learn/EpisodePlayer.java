@@ -1,21 +1,19 @@
 package handsim.learn;
 
+import handsim.rollout.Rollouts;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutorService;
 import java.util.function.Function;
 
 /**
- * Playing episodes: one episode with any actor (the live agent when learning online), or a
- * batch of episodes with a frozen {@link Policy} snapshot spread over several environment
- * instances on an executor. Given the {@link Env} contract (reset fully determines an episode),
- * an episode depends only on its request and the policy, so a batch's result is the same for
- * any number of workers and any scheduling; results come back in request order.
+ * The learner's episode player: one episode with any actor (the live agent when learning
+ * online), or a batch of episodes with a frozen {@link Policy} snapshot spread over the
+ * environments of rollout workers ({@link handsim.rollout.Rollouts}, each worker owning one
+ * environment). Given the {@link Env} contract (reset fully determines an episode), an episode
+ * depends only on its request and the policy, so a batch's result is the same for any number of
+ * workers and any scheduling; results come back in request order.
  */
-public final class Rollouts {
+public final class EpisodePlayer {
 
     /**
      * What to play.
@@ -55,7 +53,7 @@ public final class Rollouts {
         }
     }
 
-    private Rollouts() {
+    private EpisodePlayer() {
     }
 
     /**
@@ -63,7 +61,7 @@ public final class Rollouts {
      * or random) until the task ends it or {@code maxDecisions} is reached (a truncation).
      */
     public static Episode play(Env env, Request req, Function<double[], double[]> actor,
-            TrainingConfig.Exploration exploration, StepHook hook) {
+            LearnerConfig.Exploration exploration, StepHook hook) {
         ActionNoise noise = new ActionNoise(exploration.noise(), exploration.ouTheta(), env.actionSize(), req.noiseSeed());
         double[] obs = env.reset(req.envSeed()).clone();
         double[] first = obs.clone();
@@ -88,23 +86,16 @@ public final class Rollouts {
     }
 
     /**
-     * Plays the requests with one policy snapshot on the given environment instances (each
-     * used by one thread at a time) and executor; results in request order.
+     * Plays the requests with one policy snapshot on the rollout workers' environments; results
+     * in request order.
      */
-    public static List<Episode> playAll(List<? extends Env> envs, ExecutorService executor, Policy policy,
-            List<Request> requests, TrainingConfig.Exploration exploration) {
-        BlockingQueue<Env> free = new ArrayBlockingQueue<>(envs.size(), false, envs);
-        List<Callable<Episode>> tasks = new ArrayList<>();
-        for (Request r : requests) {
-            tasks.add(() -> {
-                Env env = free.take();
-                try {
-                    return play(env, r, policy::act, exploration, t -> { });
-                } finally {
-                    free.put(env);
-                }
-            });
-        }
-        return Parallel.inOrder(executor, tasks, "rollout");
+    public static <E extends Env> List<Episode> playAll(Rollouts<E> envs, Policy policy, List<Request> requests,
+            LearnerConfig.Exploration exploration) {
+        return envs.run(requests.size(), env -> i -> play(env, requests.get(i), policy::act, exploration, t -> { }));
+    }
+
+    /** A trainer's rounds played on the rollout workers' environments ({@link #playAll}). */
+    public static <E extends Env> Trainer.RoundPlayer onWorkers(Rollouts<E> envs, LearnerConfig.Exploration exploration) {
+        return (snapshot, requests) -> playAll(envs, snapshot, requests, exploration);
     }
 }
