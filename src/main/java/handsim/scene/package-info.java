@@ -7,6 +7,8 @@
  * {@link handsim.scene.SimClock}).
  *
  * <p>Imports {@code handsim.task}, {@code handsim.evaluation} (seeded episodes) and what they stand
- * on; never an engine, LWJGL, picocli or the app: the viewer draws what a scene shows.
+ * on ({@code handsim.math}, {@code handsim.config}, {@code handsim.model}, {@code handsim.kin},
+ * {@code handsim.sim}, {@code handsim.control}); never an engine, LWJGL, picocli or the app: the
+ * viewer draws what a scene shows.
  */
 package handsim.scene;
