@@ -279,14 +279,7 @@ final class FlipEvaluation extends TaskEvaluation {
         putStyles(o.putArray("catch_styles"), planning.catchStyles());
         putStyles(o.putArray("throw_in_styles"), planning.throwInStyles());
         putStyles(o.putArray("catch_branches"), planning.catchBranches());
-        o.put("decisions", s.decisions());
-        o.put("tries", s.tries());
-        o.put("unsolved", s.unsolved());
-        o.put("mispredicted", s.mispredicted());
-        o.put("promised", s.promised());
-        o.put("restyled_catches", s.restyledCatches());
-        o.put("restyled_throw_ins", s.restyledThrowIns());
-        o.put("branches", s.branches());
+        o.setAll(ResultJson.plannerStats(s));
         console.printf(Locale.ROOT, "planner: %d throws chosen from %d tries (%.1f per throw); for %d of them no try succeeded; "
                 + "%d began with the throw the lookahead had found; %d live loops differed from their try in the twin; "
                 + "%d throws and %d throw-ins caught otherwise than the controller's own way; %d catches played again from a throw's end%n",
