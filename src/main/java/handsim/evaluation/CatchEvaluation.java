@@ -93,7 +93,7 @@ public final class CatchEvaluation {
      * {@code twin}.
      */
     public CatchEvaluation planned(PlannerConfig config, Simulator twin) {
-        ThrowPlanner.requirePlannable(task);
+        task.requireFixedGoal("throw planner");
         CatchEvaluation e = new CatchEvaluation(controllerConfig, limits, launches, object, task, throwPolicy);
         e.planning = config;
         e.twin = twin;

@@ -140,19 +140,11 @@ public final class ThrowPlanner {
      * @param task the task whose success counts; its goal must not change from throw to throw
      */
     ThrowPlanner(PlannerConfig config, ThrowTask task, ThrowSpace space, CatchThrowEpisode twin) {
-        requirePlannable(task);
+        task.requireFixedGoal("throw planner");
         this.config = config;
         this.task = task;
         this.space = space;
         this.twin = twin;
-    }
-
-    /** The twin episode is restored without the task's goal, so the planner plans for tasks whose goal never changes. */
-    static void requirePlannable(ThrowTask task) {
-        if (task.goalSize() != 0) {
-            throw new IllegalArgumentException("the throw planner needs a task whose goal stays the same from throw to throw "
-                    + "(flip); the " + task.name() + " task's changes");
-        }
     }
 
     public Stats stats() {
