@@ -215,7 +215,7 @@ final class DemoCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             // not numbers, or LOW above HIGH: the message below
         }
-        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with LOW <= HIGH, both in " + height.goalLimits()
-                + ", got \"" + text + "\"");
+        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with " + height.lowestGoal() + " < LOW <= HIGH < "
+                + height.highestGoal() + ", got \"" + text + "\"");
     }
 }

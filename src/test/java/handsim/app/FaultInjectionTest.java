@@ -32,6 +32,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -41,6 +42,7 @@ import org.junit.jupiter.api.io.TempDir;
  * diverges; an object no hand catches. Each case asserts the exit status, the one-line message
  * and the files left behind (training runs: {@link FaultInjectionTrainingTest}).
  */
+@Tag("slow")
 class FaultInjectionTest {
 
     @TempDir

@@ -8,10 +8,12 @@ import handsim.config.ConfigException;
 import handsim.config.Home;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The shipped planner settings per object, read from a home of the test's own. */
+@Tag("fast")
 class WiringTest {
 
     @Test

@@ -10,9 +10,11 @@ import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.math.Vec3;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The controller config's per-object grasps: lookup, and errors that name the field. */
+@Tag("fast")
 class ControllerConfigTest {
 
     private static ObjectNode shipped() {

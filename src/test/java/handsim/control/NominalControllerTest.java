@@ -16,12 +16,14 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * The FSM of the nominal controller without any physics: the joints follow the targets exactly
  * (perfect tracking), the object flies ballistically, and contact is whatever the test says.
  */
+@Tag("fast")
 class NominalControllerTest {
 
     static final Vec3 GRAVITY = new Vec3(0, -9.81, 0);

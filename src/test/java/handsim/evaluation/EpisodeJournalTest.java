@@ -11,10 +11,12 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The journal of finished episodes: kept across runs of the same signature, refused for another, robust to a cut line. */
+@Tag("fast")
 class EpisodeJournalTest {
 
     private static ObjectNode signature(long seed) {

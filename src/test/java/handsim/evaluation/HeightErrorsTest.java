@@ -5,9 +5,11 @@ import handsim.task.LoopRecord;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The height task's accuracy figures on hand-computed examples. */
+@Tag("fast")
 class HeightErrorsTest {
 
     private static LoopRecord loop(int index, double apex, double target) {

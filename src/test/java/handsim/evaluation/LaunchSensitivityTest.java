@@ -8,9 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.math.Vec3;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The launch-sensitivity figures on hand-computed examples. */
+@Tag("fast")
 class LaunchSensitivityTest {
 
     private static LoopRecord loop(int index, double apex, double rotationDeg) {

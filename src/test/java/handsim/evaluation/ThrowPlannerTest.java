@@ -24,12 +24,14 @@ import handsim.control.ThrowDecision;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * The checkpoint a planner copies into its twin world, and the planner on the can's flip: the
  * nominal flip of configs/tasks/flip.json proposes, the planner chooses.
  */
+@Tag("slow")
 class ThrowPlannerTest {
 
     /** A seed whose nominal flip fails at its second throw (measured: 1 flip-and-catch loop in a row). */

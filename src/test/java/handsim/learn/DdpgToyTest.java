@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** DDPG on toy problems without physics, each with a known optimum (ToyEnvs). */
+@Tag("slow")
 class DdpgToyTest {
 
     /** The shared learner settings of the toy runs: faster rates than the defaults, for ~10^3-update budgets. */

@@ -7,8 +7,10 @@ import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class EpisodePlayerTest {
 
     @Test

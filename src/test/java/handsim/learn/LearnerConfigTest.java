@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.config.ConfigException;
 import handsim.config.Json;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
-class TrainingConfigTest {
+@Tag("fast")
+class LearnerConfigTest {
 
     @Test
     void defaultsParseAndRoundTripThroughJson() {

@@ -20,9 +20,11 @@ import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Parallel rollouts: same results whatever the number of workers, in index order. */
+@Tag("slow")
 class LocalRolloutsTest {
 
     private final HandModel model = TestSupport.model();

@@ -19,9 +19,11 @@ import handsim.scene.FakeScene;
 import handsim.sim.ode.OdeSimulator;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** What a watcher can ask of the scenes: switching task, object and controller; moving the goal. */
+@Tag("fast")
 class InteractiveScenesTest {
 
     /** A catalog whose only available setup is the height task with the nominal controller. */

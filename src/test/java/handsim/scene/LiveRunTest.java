@@ -8,9 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import handsim.scene.SceneCommand;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Real-time pacing of a scene by the run's accumulator, without its thread (update() by hand). */
+@Tag("fast")
 class LiveRunTest {
 
     static final double FRAME = 1 / 60.0, MAX_LAG = 0.1, MIN_CHUNK = 0.004, MAX_CHUNK = 0.017;

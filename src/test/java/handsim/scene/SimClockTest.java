@@ -3,9 +3,11 @@ package handsim.scene;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The sim-time accumulator, driven by hand-made wall times. */
+@Tag("fast")
 class SimClockTest {
 
     static final double EPS = 1e-12;

@@ -22,6 +22,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -31,6 +32,7 @@ import org.junit.jupiter.params.provider.ValueSource;
  * configs/launch.json) is caught on its first arrival and thrown and caught again, and the
  * loop follows a recorded golden trajectory.
  */
+@Tag("slow")
 public class CatchLoopTest {
 
     static final long SEED = 1;

@@ -2,9 +2,11 @@ package handsim.task;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The height goals of an episode: a list is taken in turn, from its start in every episode. */
+@Tag("fast")
 class HeightGoalsTest {
 
     @Test

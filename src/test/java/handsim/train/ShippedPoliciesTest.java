@@ -18,6 +18,7 @@ import handsim.task.LoopRecord;
 import handsim.task.ThrowTask;
 import java.nio.file.Path;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -25,6 +26,7 @@ import org.junit.jupiter.api.Test;
  * current simulator and controller. A change to the physics, the controller or the task that
  * the policy was trained on shows up here before it shows up in a long evaluation.
  */
+@Tag("slow")
 class ShippedPoliciesTest {
 
     /**

@@ -26,6 +26,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -34,6 +35,7 @@ import org.junit.jupiter.api.io.TempDir;
  * third decision on) writes a well-formed run folder, and a run stopped after its first
  * checkpoint and resumed ends exactly where an uninterrupted one does.
  */
+@Tag("slow")
 class TrainRunTest {
 
     private static TrainConfig tinyConfig() {

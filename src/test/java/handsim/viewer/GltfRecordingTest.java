@@ -18,6 +18,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * written as one .glb beside the PNG recordings, with the floor, the goal plane and the camera.
  * The run is advanced by hand at 60 Hz, as in {@link ViewerTest}.
  */
+@Tag("slow")
 class GltfRecordingTest {
 
     static final double FRAME = 1 / 60.0;

@@ -17,9 +17,11 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Keys and mouse, without a window: GLFW events in, run commands, camera moves and requests out. */
+@Tag("fast")
 class ViewerControlsTest {
 
     private FakeScene scene;

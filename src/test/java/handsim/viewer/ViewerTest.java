@@ -26,6 +26,7 @@ import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.Set;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -35,6 +36,7 @@ import org.junit.jupiter.api.io.TempDir;
  * same every time), a screenshot, and the arm, the object and the goal plane found where the
  * camera projects them.
  */
+@Tag("fast")
 class ViewerTest {
 
     static final long SEED = 1;
