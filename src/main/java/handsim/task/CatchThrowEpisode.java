@@ -54,7 +54,8 @@ public final class CatchThrowEpisode {
     private List<WorldSnapshot.StaticBox> boxes = List.of();
     private Vec3 longAxis;
     private double objectRadius;
-    private EpisodeState s;
+    /** Everything of the episode besides the world (see {@link EpisodeState}). */
+    private EpisodeState state;
 
     /** {@code task} sets each throw's goal; the decisions read it. */
     public CatchThrowEpisode(Simulator sim, PdController pd, NominalController controller, ThrowTask task,
@@ -88,7 +89,7 @@ public final class CatchThrowEpisode {
         task.start(sim, seed);
         setUp(object);
         sim.spawnObject(object, launch);
-        s = new EpisodeState(null, new FlightTracker(sim.config().gravity().negate()));
+        state = new EpisodeState(null, new FlightTracker(sim.config().gravity().negate()));
         startController(null);
         beginLoop();
     }
@@ -98,15 +99,15 @@ public final class CatchThrowEpisode {
      * launched object as {@code style} says (null: its own way): a throw planner's choice.
      */
     public void catchThrowInAs(CatchStyle style) {
-        if (!s.loops.isEmpty() || sim.time() != s.loop.loopStart || s.decision != null) {
+        if (!state.loops.isEmpty() || sim.time() != state.loop.loopStart || state.decision != null) {
             throw new IllegalStateException("the throw-in's catch is chosen before the episode's first tick");
         }
         startController(style);
     }
 
     private void startController(CatchStyle throwIn) {
-        s.controller = controller.start(observe(), throwIn);
-        System.arraycopy(s.controller.targets(), 0, loop.targets(), 0, q.length);
+        state.controller = controller.start(observe(), throwIn);
+        System.arraycopy(state.controller.targets(), 0, loop.targets(), 0, q.length);
     }
 
     /** The object's shape, and the boxes of the world it flies in. */
@@ -126,30 +127,30 @@ public final class CatchThrowEpisode {
 
     /** The episode's own state (live: what {@link #checkpoint} copies). */
     public EpisodeState state() {
-        return s;
+        return state;
     }
 
     public ControllerState controllerState() {
-        return s.controller;
+        return state.controller;
     }
 
     public Status status() {
-        return s.status;
+        return state.status;
     }
 
     /** The apex height the throw now in progress aims at (m; NaN before the first throw or without a height goal). */
     public double throwGoal() {
-        return s.loop.loopGoal;
+        return state.loop.loopGoal;
     }
 
     /** Finished loops, in order. */
     public List<LoopRecord> loops() {
-        return s.loops;
+        return state.loops;
     }
 
     /** The episode so far, as a result. */
     public EpisodeResult result(long seed) {
-        return new EpisodeResult(seed, s.loops, s.status);
+        return new EpisodeResult(seed, state.loops, state.status);
     }
 
     /**
@@ -167,7 +168,7 @@ public final class CatchThrowEpisode {
 
     /** The episode now, to go on from later or in a twin episode ({@link #restore}). */
     public Checkpoint checkpoint() {
-        return new Checkpoint(sim.captureState(), s.copy());
+        return new Checkpoint(sim.captureState(), state.copy());
     }
 
     /**
@@ -184,13 +185,13 @@ public final class CatchThrowEpisode {
         }
         sim.restoreState(c.world());
         setUp(object);
-        s = c.episode().copy();
-        System.arraycopy(s.controller.targets(), 0, loop.targets(), 0, q.length);
+        state = c.episode().copy();
+        System.arraycopy(state.controller.targets(), 0, loop.targets(), 0, q.length);
     }
 
     /** The observation the episode waits at for a throw's decision ({@link #advanceToDecision}), or null when not at one. */
     public Observation decision() {
-        return s.decision;
+        return state.decision;
     }
 
     /** The observation the controller sees now. */
@@ -198,7 +199,7 @@ public final class CatchThrowEpisode {
         sim.readJoints(q, qd);
         Frame palmFrame = sim.bodyFrame(palm.body()).compose(new Frame(palm.position(), palm.orientation()));
         Vec3 palmVelocity = sim.pointVelocity(palm.body(), palm.position());
-        return new Observation(sim.time(), q.clone(), qd.clone(), palmFrame, palmVelocity, sim.objectState(), s.touchedSinceTick);
+        return new Observation(sim.time(), q.clone(), qd.clone(), palmFrame, palmVelocity, sim.objectState(), state.touchedSinceTick);
     }
 
     /**
@@ -208,24 +209,24 @@ public final class CatchThrowEpisode {
      */
     public Observation advanceToDecision() {
         requireRunning();
-        while (s.decision == null) {
+        while (state.decision == null) {
             tick();
-            if (s.status != Status.RUNNING) {
+            if (state.status != Status.RUNNING) {
                 return null;
             }
         }
-        return s.decision;
+        return state.decision;
     }
 
     /** At a decision ({@link #advanceToDecision}): the controller begins the THROW that {@code decision} says. */
     public void decide(ThrowDecision decision) {
-        if (s.decision == null) {
+        if (state.decision == null) {
             throw new IllegalStateException("the episode is not at a throw's decision");
         }
-        Observation obs = s.decision;
-        s.decision = null;
-        Phase before = s.controller.phase();
-        controller.beginThrow(obs, s.controller, decision);
+        Observation obs = state.decision;
+        state.decision = null;
+        Phase before = state.controller.phase();
+        controller.beginThrow(obs, state.controller, decision);
         afterReaction(before);
     }
 
@@ -237,7 +238,7 @@ public final class CatchThrowEpisode {
      */
     public LoopRecord tick() {
         requireRunning();
-        if (s.decision != null) {
+        if (state.decision != null) {
             throw new IllegalStateException("the episode waits at a throw's decision: decide it first");
         }
         LoopRecord dropped = advancePhysics();
@@ -245,15 +246,15 @@ public final class CatchThrowEpisode {
             return dropped;
         }
         Observation obs = takeObservation();
-        if (controller.throwDue(obs, s.controller)) {
+        if (controller.throwDue(obs, state.controller)) {
             LoopRecord judged = judgeCatch(obs);
-            if (s.status == Status.RUNNING) {
-                s.decision = obs;
+            if (state.status == Status.RUNNING) {
+                state.decision = obs;
             }
             return judged;
         }
-        Phase before = s.controller.phase();
-        controller.update(obs, s.controller);
+        Phase before = state.controller.phase();
+        controller.update(obs, state.controller);
         return afterReaction(before);
     }
 
@@ -262,36 +263,36 @@ public final class CatchThrowEpisode {
      * yet planned ({@link #meetComingCatchAs} may still choose it). False when the episode ended first.
      */
     public boolean advanceToThrowEnd() {
-        while (s.status == Status.RUNNING && s.controller.phase() == Phase.THROW) {
+        while (state.status == Status.RUNNING && state.controller.phase() == Phase.THROW) {
             tick();
         }
-        return s.status == Status.RUNNING;
+        return state.status == Status.RUNNING;
     }
 
     /** In THROW or GOBACK: the coming catch meets the object as {@code style} says ({@link NominalController#meetComingCatchAs}). */
     public void meetComingCatchAs(CatchStyle style) {
-        controller.meetComingCatchAs(s.controller, style);
+        controller.meetComingCatchAs(state.controller, style);
     }
 
     private void requireRunning() {
-        if (s.status != Status.RUNNING) {
-            throw new IllegalStateException("episode is over: " + s.status);
+        if (state.status != Status.RUNNING) {
+            throw new IllegalStateException("episode is over: " + state.status);
         }
     }
 
     /** The physics of one controller period; the loop record if the object was dropped. */
     private LoopRecord advancePhysics() {
-        EpisodeState.LoopStats current = s.loop;
+        EpisodeState.LoopStats current = state.loop;
         for (int i = 0; i < periodSteps; i++) {
             current.peakTorqueRatio = Math.max(current.peakTorqueRatio, loop.step());
-            s.touchedSinceTick |= sim.handContacts().bodyMask();
+            state.touchedSinceTick |= sim.handContacts().bodyMask();
             current.maxDepth = Math.max(current.maxDepth, sim.handContacts().maxDepth());
             current.boxHit |= sim.objectTouchesBox();
             sim.objectPosition(objectPosition);
             current.apex = Math.max(current.apex, objectPosition[1]);
             if (sim.objectTouchesGround() || distanceFromShoulder(objectPosition) > limits.maxDistance()) {
                 current.landing = Vec3.of(objectPosition);
-                s.status = Status.DROPPED;
+                state.status = Status.DROPPED;
                 return finishLoop(false);
             }
         }
@@ -301,8 +302,8 @@ public final class CatchThrowEpisode {
     /** The observation at the end of a period, with the loop's per-tick statistics updated from it. */
     private Observation takeObservation() {
         Observation obs = observe();
-        s.touchedSinceTick = 0;
-        EpisodeState.LoopStats current = s.loop;
+        state.touchedSinceTick = 0;
+        EpisodeState.LoopStats current = state.loop;
         for (int i = 0; i < q.length; i++) {
             current.maxLimitExcess = Math.max(current.maxLimitExcess, model.dofs().get(i).limitExcess(obs.q()[i]));
         }
@@ -316,21 +317,21 @@ public final class CatchThrowEpisode {
 
     /** Follows the loop's throw in flight, from the release to the catch (see {@link FlightTracker}). */
     private void trackFlight(Observation obs) {
-        if (s.loops.isEmpty()) {
+        if (state.loops.isEmpty()) {
             return;
         }
         RigidState o = obs.object();
-        s.flight.observe(obs.handTouchedObject(), s.controller.phase() != Phase.MIDDLE, o.position(), o.velocity(),
+        state.flight.observe(obs.handTouchedObject(), state.controller.phase() != Phase.MIDDLE, o.position(), o.velocity(),
                 longAxis == null ? null : o.orientation().rotate(longAxis), o.angularVelocity());
     }
 
     /** After the controller reacted: a loop begins with a THROW; the loop record if the loop ran out of time. */
     private LoopRecord afterReaction(Phase before) {
-        System.arraycopy(s.controller.targets(), 0, loop.targets(), 0, q.length);
-        if (before == Phase.MIDDLE && s.controller.phase() == Phase.THROW) {
+        System.arraycopy(state.controller.targets(), 0, loop.targets(), 0, q.length);
+        if (before == Phase.MIDDLE && state.controller.phase() == Phase.THROW) {
             beginLoop();
-        } else if (sim.time() - s.loop.loopStart > limits.maxLoopSeconds()) {
-            s.status = Status.TIME_LIMIT;
+        } else if (sim.time() - state.loop.loopStart > limits.maxLoopSeconds()) {
+            state.status = Status.TIME_LIMIT;
             return finishLoop(false);
         }
         return null;
@@ -343,11 +344,11 @@ public final class CatchThrowEpisode {
     private LoopRecord judgeCatch(Observation obs) {
         boolean held = obs.object().position().distance(obs.palm().origin()) < limits.holdDistance();
         if (!held) {
-            s.loop.landing = obs.object().position();
-            s.status = Status.DROPPED;
+            state.loop.landing = obs.object().position();
+            state.status = Status.DROPPED;
         } else if (longAxis != null) {
             Vec3 axis = obs.object().orientation().rotate(longAxis); // unit: ObjectSpec normalises it
-            s.loop.catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
+            state.loop.catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
         }
         return finishLoop(held);
     }
@@ -362,19 +363,19 @@ public final class CatchThrowEpisode {
     private void beginLoop() {
         EpisodeState.LoopStats current = new EpisodeState.LoopStats();
         current.loopStart = sim.time();
-        s.flight.reset();
-        current.loopThrow = s.loops.isEmpty() ? null : s.controller.currentThrow();
-        current.loopGoal = s.loops.isEmpty() ? Double.NaN : task.targetHeight();
-        if (!s.loops.isEmpty()) {
+        state.flight.reset();
+        current.loopThrow = state.loops.isEmpty() ? null : state.controller.currentThrow();
+        current.loopGoal = state.loops.isEmpty() ? Double.NaN : task.targetHeight();
+        if (!state.loops.isEmpty()) {
             task.advance(); // the throw of this loop is made: the next one aims at its own goal
         }
-        s.loop = current;
+        state.loop = current;
     }
 
     private LoopRecord finishLoop(boolean caught) {
-        int index = s.loops.size();
-        EpisodeState.LoopStats c = s.loop;
-        FlightTracker flight = s.flight;
+        int index = state.loops.size();
+        EpisodeState.LoopStats c = state.loop;
+        FlightTracker flight = state.flight;
         if (!caught && c.landing == null) {
             c.landing = sim.objectState().position();
         }
@@ -384,7 +385,7 @@ public final class CatchThrowEpisode {
                 index == 0 ? Double.NaN : flight.releaseSpin(), c.catchTilt, flight.catchPoint(),
                 index == 0 || longAxis == null ? Double.NaN : flight.arrivalTilt(),
                 c.maxDepth, c.maxLimitExcess, c.peakTorqueRatio, sim.time() - c.loopStart);
-        s.loops.add(r);
+        state.loops.add(r);
         return r;
     }
 
