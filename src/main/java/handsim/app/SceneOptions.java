@@ -1,16 +1,18 @@
 package handsim.app;
 
 import handsim.model.HandModel;
-import handsim.sim.Simulator;
-import handsim.task.Goal;
-import handsim.task.HeightGoals;
 import handsim.scene.HeldBallScenario;
 import handsim.scene.HeldBallScene;
 import handsim.scene.InteractiveScene;
 import handsim.scene.Scene;
 import handsim.scene.SceneSetup;
-import handsim.task.ServoLoop;
 import handsim.scene.SwitchingScene;
+import handsim.sim.Simulator;
+import handsim.task.Goal;
+import handsim.task.HeightGoals;
+import handsim.task.HeightTask;
+import handsim.task.ServoLoop;
+import handsim.task.Tasks;
 import handsim.viewer.ViewerConfig;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -36,10 +38,14 @@ final class SceneOptions {
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
 
-    /** Refuses a duration out of (0, 600] s. */
+    /** Refuses a duration out of (0, 600] s and a goal height the height task does not allow. */
     void validate() {
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
+        }
+        HeightTask.Config height = Tasks.heightConfig();
+        if (!height.allowsGoal(throwHeight)) {
+            throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }
     }
 
