@@ -35,7 +35,6 @@ public final class Simulator {
     private final double[] grad;
     private final double[] rhs;
     private final double[] step;
-    private final double[] work;
     private final double[] translation = new double[3];
     private final StepStats total = new StepStats();
     private long[] pattern = new long[0];
@@ -49,8 +48,8 @@ public final class Simulator {
         this.bones = bones;
         this.contacts = new ContactSet(world.collision, settings.dhat(), settings.hashCell());
         this.friction = new Friction(settings.frictionEpsV());
-        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallelAssembly());
-        this.system = new SparseSpdSystem(world.freeCount);
+        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallel());
+        this.system = new SparseSpdSystem(world.freeCount, settings.factorisation(), settings.parallel());
         this.n = 3 * world.nodeCount();
         xt = new double[n];
         x = new double[n];
@@ -58,7 +57,6 @@ public final class Simulator {
         grad = new double[n];
         rhs = new double[3 * world.freeCount];
         step = new double[n];
-        work = new double[3 * world.freeCount];
     }
 
     /**
@@ -114,15 +112,9 @@ public final class Simulator {
             assemble();
             long a1 = System.nanoTime();
             st.assemblyNanos += a1 - a0;
-            boolean factored = system.factor();
-            for (double shift = 1e-10; !factored && shift < 1; shift *= 100) {
-                factored = system.refactorWithShift(shift);
-                st.shiftedFactorisations++;
-            }
-            if (!factored) {
+            if (!system.solve(rhs, settings.cgTolerance(), settings.cgMaxIterations())) {
                 throw new IllegalStateException("Newton system not positive definite at step " + state.steps);
             }
-            system.solve(rhs, work);
             long a2 = System.nanoTime();
             st.solveNanos += a2 - a1;
             double largest = scatterStep();
@@ -152,7 +144,10 @@ public final class Simulator {
             }
             System.arraycopy(trial, 0, x, 0, n);
             energy = e;
-            updateStiffness(state);
+            if (updateStiffness(state)) {
+                // E changed with κ: the next line search compares against E at x with the new κ
+                energy = potential.value(x);
+            }
         }
         if (!converged) {
             st.unconvergedSteps++;
@@ -167,6 +162,9 @@ public final class Simulator {
         st.maxContacts = contacts.size();
         st.minGap = contacts.minGap(x);
         st.patternBuilds = system.patternBuilds() - total.patternBuilds;
+        st.factorisations = system.factorisations() - total.factorisations;
+        st.cgIterations = system.cgIterations() - total.cgIterations;
+        st.shiftedFactorisations = system.shiftedFactorisations() - total.shiftedFactorisations;
         total.add(st);
         return st;
     }
@@ -300,14 +298,16 @@ public final class Simulator {
         state.kappa = kappa;
     }
 
-    /** Doubles κ while the smallest gap d − ξ keeps shrinking below ε_d = 1e-9 (bbox diagonal + ξ). */
-    private void updateStiffness(SimState state) {
+    /** Doubles κ while the smallest gap d − ξ keeps shrinking below ε_d = 1e-9 (bbox diagonal + ξ); whether it did. */
+    private boolean updateStiffness(SimState state) {
         double eps = 1e-9 * (world.bboxDiagonal + world.collision.maxOffsetForStiffness());
         double min = contacts.minGap(x);
-        if (state.previousMinGap2 < eps && min < eps && min < state.previousMinGap2) {
+        boolean grows = state.previousMinGap2 < eps && min < eps && min < state.previousMinGap2 && state.kappa < state.kappaMax;
+        if (grows) {
             state.kappa = Math.min(state.kappaMax, 2 * state.kappa);
             potential.setKappa(state.kappa);
         }
         state.previousMinGap2 = min;
+        return grows;
     }
 }

@@ -1,12 +1,15 @@
 package handsim.cards.sleight;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.cards.sim.CardsConfig;
 import handsim.cards.sim.CardsConfig.Materials;
 import handsim.cards.sim.SimState;
 import handsim.cards.sim.Simulator;
 import handsim.cards.sim.SolverSettings;
 import handsim.cards.sim.StepStats;
+import handsim.config.Json;
 import java.nio.file.Path;
+import java.util.Map;
 
 /**
  * One Card Snapping trial (thesis 4.2.4) as a function of its parameters: the entry point an
@@ -20,11 +23,17 @@ public final class SnapTrial {
 
     private final SnapScene scene;
     private final SolverSettings settings;
+    private final ObjectNode inputs;
     private SimState held;
 
     public SnapTrial(SnapConfig config, Materials materials, SolverSettings settings) {
+        this(config, materials, settings, Json.mapper().createObjectNode());
+    }
+
+    private SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, ObjectNode inputs) {
         this.scene = new SnapScene(config, materials, settings);
         this.settings = settings;
+        this.inputs = inputs;
     }
 
     /**
@@ -32,10 +41,38 @@ public final class SnapTrial {
      * {@code home}, with an optional fingertip resolution ("thesis", "reduced") and card preset.
      */
     public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset) {
+        return fromConfigs(home, mesh, cardPreset, Map.of());
+    }
+
+    /**
+     * {@link #fromConfigs(Path, String, String)} with fields of snap.json overridden by dotted
+     * path ({@code "trial.duration" -> "0.3"}, values in JSON).
+     */
+    public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset, Map<String, String> snapOverrides) {
         Path dir = home.resolve("configs/cards");
-        return new SnapTrial(SnapConfig.load(dir.resolve("snap.json"), mesh),
-                CardsConfig.materials(dir.resolve("materials.json"), cardPreset),
-                CardsConfig.solver(dir.resolve("solver.json")));
+        Json snapFile = Json.load(dir.resolve("snap.json"));
+        Json snap = Json.of(snapFile.source(), Json.withOverrides(snapFile.source(), snapFile.node(), snapOverrides));
+        Json materialsFile = Json.load(dir.resolve("materials.json"));
+        Json solverFile = Json.load(dir.resolve("solver.json"));
+        SnapConfig config = SnapConfig.parse(snap, mesh);
+        Materials materials = CardsConfig.materials(materialsFile, cardPreset);
+        ObjectNode inputs = Json.mapper().createObjectNode();
+        inputs.put("sleight", "snap");
+        inputs.put("mesh", config.meshName());
+        inputs.put("card", materials.cardPreset());
+        inputs.set("snap", snap.node().deepCopy());
+        inputs.set("materials", materialsFile.node().deepCopy());
+        inputs.set("solver", solverFile.node().deepCopy());
+        return new SnapTrial(config, materials, CardsConfig.solver(solverFile), inputs);
+    }
+
+    /**
+     * What this trial was built from, for a study's record: the sleight, fingertip mesh and card
+     * preset, and snap.json (with any overrides), materials.json and solver.json as read; empty
+     * for a trial built from records.
+     */
+    public ObjectNode inputs() {
+        return inputs.deepCopy();
     }
 
     public SnapScene scene() {
