@@ -60,8 +60,9 @@ final class CardsOptimize implements Callable<Integer> {
     @Option(names = "--card", paramLabel = "PRESET", description = "card material preset of configs/cards/materials.json (default: the file's)")
     String card;
 
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a field of configs/cards/snap.json, e.g. --set trial.alphaTarget=4 "
-            + "(repeatable; dotted paths); part of the study, so a resume needs the same")
+    @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (snap, materials, "
+            + "solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part of "
+            + "the study, so a resume needs the same")
     List<String> overrides = List.of();
 
     @Option(names = "--width", defaultValue = "640", description = "best trial's frame width in pixels (default: ${DEFAULT-VALUE})")

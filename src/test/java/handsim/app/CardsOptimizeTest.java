@@ -17,9 +17,9 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code handsim cards optimize --sleight snap} end to end on coarse fingertips and a 0.1 s
- * trial: the study folder, the best trial replayed with its frames, a resume after an
- * interruption that gives the trials of an uninterrupted study run on another number of workers,
- * and bad input refused with status 2.
+ * trial: the study folder, the best trial replayed with its frames and played by the viewer, a
+ * resume after an interruption that gives the trials of an uninterrupted study run on another
+ * number of workers, and bad input refused with status 2.
  */
 class CardsOptimizeTest {
 
@@ -36,8 +36,8 @@ class CardsOptimizeTest {
     private static List<String> args(Path config, Path out, int trials, int workers, String... more) {
         List<String> a = new ArrayList<>(List.of("cards", "optimize", "--sleight", "snap", "--trials", String.valueOf(trials), "--seed", "7",
                 "--workers", String.valueOf(workers), "--config", config.toString(), "--out", out.toString(), "--mesh", "coarse",
-                "--set", "trial.duration=0.1", "--set", "hold.warmup=0.1", "--set", "fingertip.softLayers=1",
-                "--set", "params={\"t0\": 0, \"t1\": 0.02, \"vp\": 0.002, \"t2\": 0.04, \"t3\": 0.08, \"vs\": 0.01}"));
+                "--set", "snap.trial.duration=0.1", "--set", "snap.hold.warmup=0.1", "--set", "snap.fingertip.softLayers=1",
+                "--set", "snap.params={\"t0\": 0, \"t1\": 0.02, \"vp\": 0.002, \"t2\": 0.04, \"t3\": 0.08, \"vs\": 0.01}"));
         a.addAll(List.of(more));
         return a;
     }
@@ -76,11 +76,15 @@ class CardsOptimizeTest {
         assertEquals("coarse", recorded.string("mesh"));
         assertEquals(0.1, recorded.get("snap").get("trial").number("duration"), 0.0);
 
+        // the viewer plays the study's best trial; a folder without one is refused
+        assertEquals(0, Main.run("view", "--scene", "snap", "--study", whole.toString(), "--benchmark-frames", "2"));
+        assertEquals(2, Main.run("view", "--scene", "snap", "--study", tmp.toString(), "--benchmark-frames", "2"));
+
         // a resume with another seed or another scene is refused
         List<String> otherSeed = args(config, whole, 3, 2);
         otherSeed.set(otherSeed.indexOf("7"), "8");
         assertEquals(2, run(otherSeed));
-        assertEquals(2, run(args(config, whole, 3, 2, "--set", "trial.alphaTarget=3")));
+        assertEquals(2, run(args(config, whole, 3, 2, "--set", "snap.trial.alphaTarget=3")));
 
         // the same study on one worker, killed after two trials while trial 1 was running: trial 1's
         // file never got written, a fragment of its temporary file may remain
@@ -108,8 +112,9 @@ class CardsOptimizeTest {
         assertEquals(2, run(List.of("cards", "optimize", "--sleight", "lift", "--trials", "3", "--seed", "1", "--out", out.toString())));
         assertEquals(2, run(args(config, out, 0, 1)), "--trials 0");
         assertEquals(2, run(args(config, out, 3, 0)), "--workers 0");
-        assertEquals(2, run(args(config, out, 3, 1, "--set", "trial.duration=-1")), "a bad snap.json value");
-        assertEquals(2, run(args(config, out, 3, 1, "--set", "nonesuch.field=1")), "a --set path that does not exist");
+        assertEquals(2, run(args(config, out, 3, 1, "--set", "snap.trial.duration=-1")), "a bad snap.json value");
+        assertEquals(2, run(args(config, out, 3, 1, "--set", "snap.nonesuch.field=1")), "a --set path that does not exist");
+        assertEquals(2, run(args(config, out, 3, 1, "--set", "trial.duration=0.2")), "a --set key without its file");
         // a search space beyond the trial's 0.1 s, and one without vs
         Path late = tmp.resolve("late.json");
         Files.writeString(late, CONFIG.replace("\"high\": 0.1}", "\"high\": 0.2}"));

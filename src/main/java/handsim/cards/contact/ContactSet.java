@@ -62,6 +62,7 @@ public final class ContactSet {
     // workspace
     private double[] vertexBoxes = new double[0];
     private double[] edgeBoxes = new double[0];
+    private double[] sweepEnd = new double[0];
     private final double[] buf = new double[12];
     private final double[] buf2 = new double[12];
     private final Scratch scratch = new Scratch();
@@ -232,8 +233,21 @@ public final class ContactSet {
 
     /** Finds the barrier-active contacts at x. */
     public void build(double[] x) {
-        double radius = mesh.maxOffset() + dhat;
-        candidates(x, null, radius);
+        candidates(x, null, mesh.maxOffset() + dhat);
+        narrowPhase(x);
+    }
+
+    /**
+     * Finds the barrier-active contacts at a point x + α p (0 ≤ α ≤ 1) of the motion last passed
+     * to {@link #largestSafeStep}: its candidates, gathered over the swept boxes grown by the
+     * activation distance, hold every pair that can be active anywhere along that motion, so
+     * the line search needs no broad phase of its own.
+     */
+    public void buildAlongSweep(double[] x) {
+        narrowPhase(x);
+    }
+
+    private void narrowPhase(double[] x) {
         count = 0;
         for (int k = 0; k < ptCount; k++) {
             int f = ptPairs[2 * k];
@@ -613,11 +627,15 @@ public final class ContactSet {
      */
     public double largestSafeStep(double[] x, double[] p, double eta) {
         int n = x.length;
-        double[] x1 = new double[n];
+        if (sweepEnd.length != n) {
+            sweepEnd = new double[n];
+        }
+        double[] x1 = sweepEnd;
         for (int i = 0; i < n; i++) {
             x1[i] = x[i] + p[i];
         }
-        candidates(x, x1, mesh.maxOffset());
+        // grown by the activation distance too: the same candidates serve buildAlongSweep
+        candidates(x, x1, mesh.maxOffset() + dhat);
         double alpha = 1;
         double[] a0 = new double[12];
         double[] a1 = new double[12];

@@ -448,6 +448,11 @@ public final class SparseSpdSystem {
         return s;
     }
 
+    /** Drops the kept factorisation: the next {@link #solve(double[], double, int)} factors afresh. */
+    public void forgetFactorisation() {
+        refreshFactor = true;
+    }
+
     /** Numeric factorisations so far (shifted ones included). */
     public int factorisations() {
         return factorisations;

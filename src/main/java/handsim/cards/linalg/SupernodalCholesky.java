@@ -33,6 +33,8 @@ final class SupernodalCholesky {
     private final int[] firstNode;
     private final int[] size;
     private final int[][] frontNodes;
+    /** for each supernode: the dof (in the node ordering) of each front row */
+    private final int[][] rowDof;
     private final int[][] children;
     /** for each supernode: where its front receives the A entries (value index → front index pairs) */
     private final int[][] assembleFrom;
@@ -46,6 +48,8 @@ final class SupernodalCholesky {
     private final int[] order;
     private final int[] phaseEnds;
     private final double[][] fronts = new double[2][];
+    /** the solve's scratch: one front's rows below its own columns */
+    private final double[] gathered;
 
     /**
      * @param lower per node, its sorted neighbours below it (the pattern of its upper columns)
@@ -128,6 +132,7 @@ final class SupernodalCholesky {
         firstNode = new int[supernodeCount];
         size = new int[supernodeCount];
         frontNodes = new int[supernodeCount][];
+        rowDof = new int[supernodeCount][];
         for (int s = 0; s < supernodeCount; s++) {
             firstNode[s] = firsts.get(s);
             int end = s + 1 < supernodeCount ? firsts.get(s + 1) : n;
@@ -139,6 +144,10 @@ final class SupernodalCholesky {
             }
             System.arraycopy(below, 0, front, size[s], below.length);
             frontNodes[s] = front;
+            rowDof[s] = new int[3 * front.length];
+            for (int i = 0; i < 3 * front.length; i++) {
+                rowDof[s][i] = 3 * front[i / 3] + i % 3;
+            }
         }
         int[] superParent = new int[supernodeCount];
         List<List<Integer>> kids = new ArrayList<>();
@@ -219,6 +228,7 @@ final class SupernodalCholesky {
             panel[s] = new double[m * k];
             update[s] = new double[(m - k) * (m - k)];
         }
+        gathered = new double[maxFront];
         fronts[0] = new double[maxFront * maxFront];
         fronts[1] = new double[maxFront * maxFront];
         // factoring order: two disjoint subtrees (balanced by work) then the rest, all in postorder
@@ -514,38 +524,50 @@ final class SupernodalCholesky {
 
     /** Solves L Lᵀ x = b in place (b in the node ordering's dofs). */
     void solve(double[] b) {
+        double[] t = gathered;
         for (int s = 0; s < supernodeCount; s++) {
-            int[] front = frontNodes[s];
-            int m = 3 * front.length;
+            int[] dof = rowDof[s];
+            int m = dof.length;
             int k = 3 * size[s];
             double[] l = panel[s];
             int base = 3 * firstNode[s];
+            for (int i = k; i < m; i++) {
+                t[i] = 0;
+            }
             for (int j = 0; j < k; j++) {
-                double y = b[base + j] / l[j + j * m];
+                int cj = j * m;
+                double y = b[base + j] / l[j + cj];
                 b[base + j] = y;
                 for (int i = j + 1; i < k; i++) {
-                    b[base + i] -= l[i + j * m] * y;
+                    b[base + i] -= l[i + cj] * y;
                 }
                 for (int i = k; i < m; i++) {
-                    b[3 * front[i / 3] + i % 3] -= l[i + j * m] * y;
+                    t[i] += l[i + cj] * y;
                 }
+            }
+            for (int i = k; i < m; i++) {
+                b[dof[i]] -= t[i];
             }
         }
         for (int s = supernodeCount - 1; s >= 0; s--) {
-            int[] front = frontNodes[s];
-            int m = 3 * front.length;
+            int[] dof = rowDof[s];
+            int m = dof.length;
             int k = 3 * size[s];
             double[] l = panel[s];
             int base = 3 * firstNode[s];
+            for (int i = k; i < m; i++) {
+                t[i] = b[dof[i]];
+            }
             for (int j = k - 1; j >= 0; j--) {
+                int cj = j * m;
                 double y = b[base + j];
                 for (int i = j + 1; i < k; i++) {
-                    y -= l[i + j * m] * b[base + i];
+                    y -= l[i + cj] * b[base + i];
                 }
                 for (int i = k; i < m; i++) {
-                    y -= l[i + j * m] * b[3 * front[i / 3] + i % 3];
+                    y -= l[i + cj] * t[i];
                 }
-                b[base + j] = y / l[j + j * m];
+                b[base + j] = y / l[j + cj];
             }
         }
     }

@@ -106,10 +106,13 @@ public final class Simulator {
         double energy = potential.value(x);
         st.assemblyNanos += System.nanoTime() - e0;
         boolean converged = false;
+        // each step starts from its state alone (so a checkpoint resumes bit for bit): the exact
+        // pattern, and no factorisation kept from the step before
+        system.forgetFactorisation();
         for (int it = 0; it < settings.maxNewtonIterations(); it++) {
             st.newtonIterations++;
             long a0 = System.nanoTime();
-            assemble();
+            assemble(it == 0);
             long a1 = System.nanoTime();
             st.assemblyNanos += a1 - a0;
             if (!system.solve(rhs, settings.cgTolerance(), settings.cgMaxIterations())) {
@@ -139,7 +142,7 @@ public final class Simulator {
             }
             if (!(e <= energy)) {
                 // no decrease along the Newton direction: keep the current iterate
-                contacts.build(x);
+                contacts.buildAlongSweep(x);
                 break;
             }
             System.arraycopy(trial, 0, x, 0, n);
@@ -169,10 +172,10 @@ public final class Simulator {
         return st;
     }
 
-    /** E at p with the contacts rebuilt there. */
+    /** E at p, a point of the last CCD sweep, with the contacts rebuilt there. */
     private double evaluate(double[] p, StepStats st) {
         long c0 = System.nanoTime();
-        contacts.build(p);
+        contacts.buildAlongSweep(p);
         long c1 = System.nanoTime();
         double e = potential.value(p);
         st.contactNanos += c1 - c0;
@@ -209,9 +212,9 @@ public final class Simulator {
         }
     }
 
-    /** −∇E into rhs (free nodes) and the projected Hessian into the system. */
-    private void assemble() {
-        updatePattern();
+    /** −∇E into rhs (free nodes) and the projected Hessian into the system; the exact pattern at a step's start. */
+    private void assemble(boolean stepStart) {
+        updatePattern(stepStart);
         potential.assemble(x, grad, system, true);
         for (int i = 0; i < n / 3; i++) {
             int f = world.freeIndex[i];
@@ -223,29 +226,47 @@ public final class Simulator {
         }
     }
 
-    /** Elastic couplings plus those of the current contacts and lagged friction. */
-    private void updatePattern() {
+    /**
+     * The Newton system's pattern: the elastic couplings plus those of the current contacts and
+     * lagged friction. Contacts come and go from one Newton iteration to the next, and a new
+     * pattern costs a new ordering and symbolic factorisation, so within a step the pattern is
+     * kept while it holds every coupling needed and at most {@link #SPARE_PAIRS} (or as many as
+     * the contacts need, if more) pairs no longer needed, which carry zeros; otherwise it becomes
+     * the needed couplings plus the kept ones within that allowance, or just the needed ones. At
+     * a step's start ({@code exact}) it is just the needed couplings.
+     */
+    private void updatePattern(boolean exact) {
         couplingCount = 0;
         contacts.couplings(this::couple);
         friction.couplings(this::couple);
         long[] keys = Arrays.copyOf(couplingKeys, couplingCount);
         Arrays.sort(keys);
-        long[] el = world.elasticPairs;
-        long[] merged = new long[el.length + keys.length];
+        long[] needed = union(world.elasticPairs, keys);
+        int allowance = exact ? 0 : Math.max(SPARE_PAIRS, needed.length - world.elasticPairs.length);
+        if (pattern.length - needed.length <= allowance && union(pattern, needed).length == pattern.length) {
+            return;
+        }
+        long[] grown = union(pattern, needed);
+        pattern = grown.length - needed.length <= allowance ? grown : needed;
+        system.setPattern(pattern);
+    }
+
+    /** Pairs kept in the pattern beyond those needed, at least. */
+    private static final int SPARE_PAIRS = 256;
+
+    /** The sorted union of two sorted arrays of distinct keys. */
+    private static long[] union(long[] a, long[] b) {
+        long[] merged = new long[a.length + b.length];
         int i = 0;
         int j = 0;
         int m = 0;
-        while (i < el.length || j < keys.length) {
-            long next = j >= keys.length || (i < el.length && el[i] <= keys[j]) ? el[i++] : keys[j++];
+        while (i < a.length || j < b.length) {
+            long next = j >= b.length || (i < a.length && a[i] <= b[j]) ? a[i++] : b[j++];
             if (m == 0 || merged[m - 1] != next) {
                 merged[m++] = next;
             }
         }
-        merged = Arrays.copyOf(merged, m);
-        if (!Arrays.equals(merged, pattern)) {
-            pattern = merged;
-            system.setPattern(pattern);
-        }
+        return Arrays.copyOf(merged, m);
     }
 
     private void couple(int a, int b) {

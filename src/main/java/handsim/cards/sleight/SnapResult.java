@@ -15,10 +15,13 @@ package handsim.cards.sleight;
  * @param contactSeconds    of which contact detection, barrier evaluation and CCD
  * @param solveSeconds      of which sparse factorisation and solve
  * @param maxContacts       most active contacts at a step end
+ * @param cardDrop          how far the lower-lying card's centroid ends below where the hold
+ *                          left it (m): millimetres while the fingers hold the cards, far more
+ *                          once they let go
  */
 public record SnapResult(double alphaEnd, double objective, double minGap, long steps, long newtonIterations,
                          double simulatedSeconds, double wallSeconds, double assemblySeconds, double contactSeconds,
-                         double solveSeconds, int maxContacts) {
+                         double solveSeconds, int maxContacts, double cardDrop) {
 
     public double newtonIterationsPerSimulatedSecond() {
         return newtonIterations / simulatedSeconds;

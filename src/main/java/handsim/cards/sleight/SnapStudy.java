@@ -82,6 +82,7 @@ public final class SnapStudy {
         return Evaluation.of(r.objective())
                 .with("alphaEnd", r.alphaEnd())
                 .with("minGap", r.minGap())
+                .with("cardDrop", r.cardDrop())
                 .with("newtonIterations", r.newtonIterations())
                 .with("wallSeconds", r.wallSeconds())
                 .with("assemblySeconds", r.assemblySeconds())

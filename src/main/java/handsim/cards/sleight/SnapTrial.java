@@ -9,6 +9,7 @@ import handsim.cards.sim.SolverSettings;
 import handsim.cards.sim.StepStats;
 import handsim.config.Json;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -45,15 +46,27 @@ public final class SnapTrial {
     }
 
     /**
-     * {@link #fromConfigs(Path, String, String)} with fields of snap.json overridden by dotted
-     * path ({@code "trial.duration" -> "0.3"}, values in JSON).
+     * {@link #fromConfigs(Path, String, String)} with fields overridden by dotted path, the first
+     * part naming the file: {@code "snap.trial.duration" -> "0.3"}, {@code "solver.parallel" ->
+     * "false"} (values in JSON; files snap, materials, solver).
      */
-    public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset, Map<String, String> snapOverrides) {
+    public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset, Map<String, String> overrides) {
         Path dir = home.resolve("configs/cards");
-        Json snapFile = Json.load(dir.resolve("snap.json"));
-        Json snap = Json.of(snapFile.source(), Json.withOverrides(snapFile.source(), snapFile.node(), snapOverrides));
-        Json materialsFile = Json.load(dir.resolve("materials.json"));
-        Json solverFile = Json.load(dir.resolve("solver.json"));
+        Map<String, Map<String, String>> byFile = new java.util.LinkedHashMap<>();
+        for (String file : List.of("snap", "materials", "solver")) {
+            byFile.put(file, new java.util.LinkedHashMap<>());
+        }
+        overrides.forEach((key, value) -> {
+            int dot = key.indexOf('.');
+            Map<String, String> target = dot < 0 ? null : byFile.get(key.substring(0, dot));
+            if (target == null) {
+                throw new IllegalArgumentException("--set " + key + ": the key must start with snap., materials. or solver.");
+            }
+            target.put(key.substring(dot + 1), value);
+        });
+        Json snap = loadWith(dir.resolve("snap.json"), byFile.get("snap"));
+        Json materialsFile = loadWith(dir.resolve("materials.json"), byFile.get("materials"));
+        Json solverFile = loadWith(dir.resolve("solver.json"), byFile.get("solver"));
         SnapConfig config = SnapConfig.parse(snap, mesh);
         Materials materials = CardsConfig.materials(materialsFile, cardPreset);
         ObjectNode inputs = Json.mapper().createObjectNode();
@@ -64,6 +77,11 @@ public final class SnapTrial {
         inputs.set("materials", materialsFile.node().deepCopy());
         inputs.set("solver", solverFile.node().deepCopy());
         return new SnapTrial(config, materials, CardsConfig.solver(solverFile), inputs);
+    }
+
+    private static Json loadWith(Path file, Map<String, String> overrides) {
+        Json j = Json.load(file);
+        return Json.of(j.source(), Json.withOverrides(j.source(), j.node(), overrides));
     }
 
     /**
@@ -129,6 +147,6 @@ public final class SnapTrial {
         double alpha = scene.angleBetweenCards(state);
         return new SnapResult(alpha, Math.abs(c.alphaTargetDegrees() - alpha), minGap, total.steps,
                 total.newtonIterations, steps * settings.timeStep(), wall, total.assemblyNanos * 1e-9,
-                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts);
+                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts, scene.cardDrop(heldState(), state));
     }
 }
