@@ -106,7 +106,7 @@ final class CardsCommand implements Runnable {
         System.out.printf("alpha_end   %.3f deg (target %.1f)%n", r.alphaEnd(), trial.scene().config().alphaTargetDegrees());
         System.out.printf("objective   %.3f deg%n", r.objective());
         System.out.printf("min gap     %.3e m over the run (%s)%n", r.minGap(), r.minGap() > 0 ? "no interpenetration" : "INTERPENETRATION");
-        System.out.printf("card drop   %.2f mm below the hold at the end%n", 1e3 * r.cardDrop());
+        System.out.printf("card drop   %.2f mm below the hold at the end (%s)%n", 1e3 * r.cardDrop(), r.held() ? "held" : "DROPPED: no snap");
         System.out.printf("newton      %d iterations over %d steps, %.0f per simulated second%n", r.newtonIterations(), r.steps(),
                 r.newtonIterationsPerSimulatedSecond());
         System.out.printf("wall time   %.1f s: assembly %.1f s, contact %.1f s, solve %.1f s%n", r.wallSeconds(), r.assemblySeconds(),
@@ -123,6 +123,7 @@ final class CardsCommand implements Runnable {
         o.put("objectiveDegrees", r.objective());
         o.put("minGap", r.minGap());
         o.put("cardDrop", r.cardDrop());
+        o.put("held", r.held());
         o.put("steps", r.steps());
         o.put("newtonIterations", r.newtonIterations());
         o.put("wallSeconds", r.wallSeconds());

@@ -7,7 +7,8 @@ import java.nio.file.Path;
 public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int cellsShort, int roundedCorners,
                          double gapFraction, double[] semiAxes, String meshName, int[] grid, int softLayers,
                          double pinchBelowTop, double initialGap, double holdDepth, double warmup,
-                         double duration, double alphaTargetDegrees, int frameEvery, SnapParams defaults) {
+                         double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
+                         int frameEvery, SnapParams defaults) {
 
     public static SnapConfig load(Path file) {
         return parse(Json.load(file), null);
@@ -58,7 +59,8 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
                 tip.numbers("semiAxes", 3), chosen, grid, tip.integer("softLayers", 1, 100),
                 tip.number("pinchBelowTop", 0, 1),
                 hold.number("initialGap", 0, 0.01), hold.number("depth", 0, 0.01), hold.number("warmup", 0, 10),
-                duration, trial.number("alphaTarget", 0, 180), trial.integer("frameEvery", 1, 10_000),
+                duration, trial.number("alphaTarget", 0, 180), trial.number("dropLimit", 0, 10), trial.number("droppedObjective", 0, 1e6),
+                trial.integer("frameEvery", 1, 10_000),
                 defaults);
         for (double a : c.semiAxes) {
             if (!(a > 0)) {

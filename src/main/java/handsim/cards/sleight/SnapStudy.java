@@ -13,8 +13,9 @@ import java.util.stream.Collectors;
 
 /**
  * Card Snapping as the objective of a study (thesis 4.2.4, Fig. 4.9): a trial per suggested
- * bone trajectory, minimising |α_target − α_end| in degrees, with the end angle, the smallest gap,
- * Newton iterations and the time split kept in each trial's record.
+ * bone trajectory, minimising |α_target − α_end| in degrees (a dropped card scores the largest
+ * error), with the end angle, the card drop, the smallest gap, Newton iterations and the time
+ * split kept in each trial's record.
  */
 public final class SnapStudy {
 
@@ -83,6 +84,7 @@ public final class SnapStudy {
                 .with("alphaEnd", r.alphaEnd())
                 .with("minGap", r.minGap())
                 .with("cardDrop", r.cardDrop())
+                .with("held", r.held() ? 1 : 0)
                 .with("newtonIterations", r.newtonIterations())
                 .with("wallSeconds", r.wallSeconds())
                 .with("assemblySeconds", r.assemblySeconds())

@@ -16,7 +16,8 @@ import java.util.Map;
  * One Card Snapping trial (thesis 4.2.4) as a function of its parameters: the entry point an
  * optimiser calls. The hold (warm-up) is simulated once per {@code SnapTrial} and kept as the
  * checkpoint every trial starts from (thesis 4.2.2); a trial then runs the bone trajectory for
- * the configured duration and returns the end angle between the cards and |α_target − α_end|.
+ * the configured duration and returns the end angle between the cards and |α_target − α_end|
+ * (or the configured dropped objective if a card fell out of the fingers).
  * Same parameters give bit-identical trajectories. Safe to call from several threads: each trial
  * builds its own simulator.
  */
@@ -145,8 +146,12 @@ public final class SnapTrial {
         double wall = (System.nanoTime() - start) * 1e-9;
         StepStats total = sim.stats();
         double alpha = scene.angleBetweenCards(state);
-        return new SnapResult(alpha, Math.abs(c.alphaTargetDegrees() - alpha), minGap, total.steps,
+        double drop = scene.cardDrop(heldState(), state);
+        // a card that fell out of the fingers was not snapped: the largest error, whatever its angle
+        boolean held = drop <= c.dropLimit();
+        double objective = held ? Math.abs(c.alphaTargetDegrees() - alpha) : c.droppedObjective();
+        return new SnapResult(alpha, objective, minGap, total.steps,
                 total.newtonIterations, steps * settings.timeStep(), wall, total.assemblyNanos * 1e-9,
-                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts, scene.cardDrop(heldState(), state));
+                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts, drop, held);
     }
 }
