@@ -22,6 +22,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code handsim cards}: the soft-body card sleights (thesis sec. 3.2 and 4.2). */
@@ -47,39 +48,27 @@ final class CardsCommand implements Runnable {
         @Option(names = "--out", paramLabel = "DIR", description = "folder for result.json, trajectory.json and frames/ (default: none written)")
         Path out;
 
-        @Option(names = "--mesh", paramLabel = "NAME", description = "fingertip resolution: thesis, reduced or coarse (default: the config's)")
-        String mesh;
-
-        @Option(names = "--card", paramLabel = "PRESET", description = "card material preset of configs/cards/materials.json (default: the file's)")
-        String card;
-
-        @Option(names = "--width", defaultValue = "640", description = "frame width in pixels (default: ${DEFAULT-VALUE})")
-        int width;
-
-        @Option(names = "--height", defaultValue = "480", description = "frame height in pixels (default: ${DEFAULT-VALUE})")
-        int height;
-
-        @Option(names = "--no-frames", description = "write no PNG frames (no display needed)")
-        boolean noFrames;
+        @Mixin
+        CardsSceneOptions scene;
 
         @Override
         public Integer call() throws IOException {
-            checkFrameSize(width, height);
-            SnapTrial trial = SnapTrial.fromConfigs(Home.root(), mesh, card);
+            scene.checkFrameSize();
+            SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card);
             SnapParams p = params == null ? trial.scene().config().defaults() : SnapParams.parse(Json.load(params));
             p.validate(trial.scene().config().duration(), params == null ? null : params.toString());
             if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
                 throw new IllegalArgumentException("--out " + out + " is a file, not a folder");
             }
             System.out.printf("handsim cards snap: %s fingertips, %d nodes (%d free), %s cards%n", trial.scene().config().meshName(),
-                    trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(), card == null ? "default" : card);
+                    trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(), scene.card == null ? "default" : scene.card);
             long h0 = System.nanoTime();
             trial.heldState();
             System.out.printf("hold (warm-up checkpoint): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
             Recorded run = record(trial, p);
             report(run.result(), trial);
             if (out != null) {
-                write(out, run, p, trial, noFrames ? 0 : width, height);
+                write(out, run, p, trial, scene.frameWidth(), scene.height);
             }
             return 0;
         }
@@ -159,15 +148,7 @@ final class CardsCommand implements Runnable {
 
     static final int STRIP_FRAMES = 5;
 
-    /** Frame sizes of 16 to 8192 pixels; others are refused by option name. */
-    static void checkFrameSize(int width, int height) {
-        if (width < 16 || width > 8192) {
-            throw new IllegalArgumentException("--width must be in [16, 8192], got " + width);
-        }
-        if (height < 16 || height > 8192) {
-            throw new IllegalArgumentException("--height must be in [16, 8192], got " + height);
-        }
-    }
+
 
     /** Frames evenly spaced from the first to the last, side by side at half size (like thesis Fig. 4.8). */
     static void writeStrip(Path frames, int count, Path file) throws IOException {

@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -54,25 +55,13 @@ final class CardsOptimize implements Callable<Integer> {
             + "(default: configs/cards/snap-study.json)")
     Path config;
 
-    @Option(names = "--mesh", paramLabel = "NAME", description = "fingertip resolution: thesis, reduced or coarse (default: snap.json's)")
-    String mesh;
-
-    @Option(names = "--card", paramLabel = "PRESET", description = "card material preset of configs/cards/materials.json (default: the file's)")
-    String card;
+    @Mixin
+    CardsSceneOptions scene;
 
     @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (snap, materials, "
             + "solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part of "
             + "the study, so a resume needs the same")
     List<String> overrides = List.of();
-
-    @Option(names = "--width", defaultValue = "640", description = "best trial's frame width in pixels (default: ${DEFAULT-VALUE})")
-    int width;
-
-    @Option(names = "--height", defaultValue = "480", description = "best trial's frame height in pixels (default: ${DEFAULT-VALUE})")
-    int height;
-
-    @Option(names = "--no-frames", description = "render no frames of the best trial (no display needed)")
-    boolean noFrames;
 
     @Spec
     CommandSpec spec;
@@ -88,13 +77,13 @@ final class CardsOptimize implements Callable<Integer> {
         if (workers != null && workers < 1) {
             throw new IllegalArgumentException("--workers must be >= 1, got " + workers);
         }
-        CardsCommand.checkFrameSize(width, height);
+        scene.checkFrameSize();
         Path configFile = config != null ? config : Home.resolve("configs/cards/snap-study.json");
         if (!Files.isRegularFile(configFile)) {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
         }
         StudyConfig studyConfig = StudyConfig.load(configFile);
-        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), mesh, card, TrainCommand.keyValues(overrides));
+        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, TrainCommand.keyValues(overrides));
         SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
@@ -131,7 +120,7 @@ final class CardsOptimize implements Callable<Integer> {
      */
     private void replayBest(Path bestDir, TrialRecord best, StudyConfig studyConfig, SnapTrial trial) throws IOException {
         Path result = bestDir.resolve("result.json");
-        boolean framesWanted = !noFrames;
+        boolean framesWanted = !scene.noFrames;
         if (Files.exists(result) && Json.load(result).integer("trial") == best.number()
                 && (!framesWanted || Files.exists(bestDir.resolve("strip.png")))) {
             System.out.println("best trial " + best.number() + " already recorded in " + bestDir);
@@ -149,6 +138,6 @@ final class CardsOptimize implements Callable<Integer> {
         ObjectNode json = CardsCommand.resultJson(run.result(), p, trial);
         json.put("trial", best.number());
         json.put("reproducesTrial", same);
-        CardsCommand.writeRecording(bestDir, run, json, noFrames ? 0 : width, height);
+        CardsCommand.writeRecording(bestDir, run, json, scene.frameWidth(), scene.height);
     }
 }

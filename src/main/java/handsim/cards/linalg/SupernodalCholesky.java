@@ -487,11 +487,7 @@ final class SupernodalCholesky {
         for (int j = 0; j < k; j++) {
             int cj = j * m;
             for (int p = 0; p < j; p++) {
-                int cp = p * m;
-                double ljp = f[j + cp];
-                for (int i = j; i < m; i++) {
-                    f[i + cj] -= f[i + cp] * ljp;
-                }
+                subtractScaled(f, cj, p * m, j, m, f[j + p * m]);
             }
             double d = f[j + cj];
             if (!(d > 1e-300)) {
@@ -504,13 +500,8 @@ final class SupernodalCholesky {
         }
         // the update of the rows below: F22 − L21 L21ᵀ
         for (int q = k; q < m; q++) {
-            int cq = q * m;
             for (int p = 0; p < k; p++) {
-                int cp = p * m;
-                double lqp = f[q + cp];
-                for (int i = q; i < m; i++) {
-                    f[i + cq] -= f[i + cp] * lqp;
-                }
+                subtractScaled(f, q * m, p * m, q, m, f[q + p * m]);
             }
         }
         System.arraycopy(f, 0, panel[s], 0, m * k);
@@ -520,6 +511,13 @@ final class SupernodalCholesky {
             System.arraycopy(f, (k + q) + (k + q) * m, u, q + q * mu, mu - q);
         }
         return true;
+    }
+
+    /** f[to + i] −= f[from + i] · scale for rows i in [first, end): one column update of a front. */
+    private static void subtractScaled(double[] f, int to, int from, int first, int end, double scale) {
+        for (int i = first; i < end; i++) {
+            f[to + i] -= f[from + i] * scale;
+        }
     }
 
     /** Solves L Lᵀ x = b in place (b in the node ordering's dofs). */
