@@ -1,5 +1,5 @@
 """Optuna 3.6.1's own TPESampler on the problems of TpeSamplerTest, for comparison with handsim's
-(the figures quoted there and in docs/cards-tpe.md). Same budgets and seeds 1-20 (1-5 for ZDT1),
+(the figures quoted there and in docs/cards.md). Same budgets and seeds 1-20 (1-5 for ZDT1),
 Optuna's numpy generator instead of Java's, so the numbers are comparable in distribution only.
 
     /tmp/optuna-venv/bin/python src/test/resources/tpe/optuna_benchmark.py

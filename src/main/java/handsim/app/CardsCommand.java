@@ -22,12 +22,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code handsim cards}: the soft-body card sleights (thesis sec. 3.2 and 4.2). */
 @Command(name = "cards", mixinStandardHelpOptions = true,
         description = "Soft fingertips handle thin-shell playing cards (thesis 3.2, 4.2).",
-        subcommands = {CardsCommand.Snap.class})
+        subcommands = {CardsCommand.Snap.class, CardsOptimize.class})
 final class CardsCommand implements Runnable {
 
     @Override
@@ -47,89 +48,107 @@ final class CardsCommand implements Runnable {
         @Option(names = "--out", paramLabel = "DIR", description = "folder for result.json, trajectory.json and frames/ (default: none written)")
         Path out;
 
-        @Option(names = "--mesh", paramLabel = "NAME", description = "fingertip resolution: thesis, reduced or coarse (default: the config's)")
-        String mesh;
-
-        @Option(names = "--card", paramLabel = "PRESET", description = "card material preset of configs/cards/materials.json (default: the file's)")
-        String card;
-
-        @Option(names = "--width", defaultValue = "640", description = "frame width in pixels (default: ${DEFAULT-VALUE})")
-        int width;
-
-        @Option(names = "--height", defaultValue = "480", description = "frame height in pixels (default: ${DEFAULT-VALUE})")
-        int height;
-
-        @Option(names = "--no-frames", description = "write no PNG frames (no display needed)")
-        boolean noFrames;
+        @Mixin
+        CardsSceneOptions scene;
 
         @Override
         public Integer call() throws IOException {
-            SnapTrial trial = SnapTrial.fromConfigs(Home.root(), mesh, card);
+            scene.checkFrameSize();
+            SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card);
             SnapParams p = params == null ? trial.scene().config().defaults() : SnapParams.parse(Json.load(params));
             p.validate(trial.scene().config().duration(), params == null ? null : params.toString());
             if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
                 throw new IllegalArgumentException("--out " + out + " is a file, not a folder");
             }
             System.out.printf("handsim cards snap: %s fingertips, %d nodes (%d free), %s cards%n", trial.scene().config().meshName(),
-                    trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(), card == null ? "default" : card);
+                    trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(), scene.card == null ? "default" : scene.card);
             long h0 = System.nanoTime();
             trial.heldState();
             System.out.printf("hold (warm-up checkpoint): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
-            Trajectory trajectory = Trajectory.of(trial.scene().world());
-            trajectory.record(trial.heldState());
-            int every = trial.scene().config().frameEvery();
-            SnapResult r = trial.run(p, (state, step) -> {
-                if (state.steps % every == 0) {
-                    trajectory.record(state);
-                }
-            });
-            report(r, trial);
+            Recorded run = record(trial, p);
+            report(run.result(), trial);
             if (out != null) {
-                write(r, p, trial, trajectory);
+                write(out, run, p, trial, scene.frameWidth(), scene.height);
             }
             return 0;
         }
+    }
 
-        private static void report(SnapResult r, SnapTrial trial) {
-            System.out.printf("alpha_end   %.3f deg (target %.1f)%n", r.alphaEnd(), trial.scene().config().alphaTargetDegrees());
-            System.out.printf("objective   %.3f deg%n", r.objective());
-            System.out.printf("min gap     %.3e m over the run (%s)%n", r.minGap(), r.minGap() > 0 ? "no interpenetration" : "INTERPENETRATION");
-            System.out.printf("newton      %d iterations over %d steps, %.0f per simulated second%n", r.newtonIterations(), r.steps(),
-                    r.newtonIterationsPerSimulatedSecond());
-            System.out.printf("wall time   %.1f s: assembly %.1f s, contact %.1f s, solve %.1f s%n", r.wallSeconds(), r.assemblySeconds(),
-                    r.contactSeconds(), r.solveSeconds());
-        }
+    /** A trial's result and the trajectory recorded while it ran. */
+    record Recorded(SnapResult result, Trajectory trajectory) {
+    }
 
-        private void write(SnapResult r, SnapParams p, SnapTrial trial, Trajectory trajectory) throws IOException {
-            Files.createDirectories(out);
-            ObjectNode o = Json.mapper().createObjectNode();
-            o.set("params", p.toJson());
-            o.put("mesh", trial.scene().config().meshName());
-            o.put("alphaEndDegrees", r.alphaEnd());
-            o.put("alphaTargetDegrees", trial.scene().config().alphaTargetDegrees());
-            o.put("objectiveDegrees", r.objective());
-            o.put("minGap", r.minGap());
-            o.put("steps", r.steps());
-            o.put("newtonIterations", r.newtonIterations());
-            o.put("wallSeconds", r.wallSeconds());
-            o.put("assemblySeconds", r.assemblySeconds());
-            o.put("contactSeconds", r.contactSeconds());
-            o.put("solveSeconds", r.solveSeconds());
-            Path tmp = out.resolve("result.json.tmp");
-            Files.writeString(tmp, Json.pretty(o));
-            Files.move(tmp, out.resolve("result.json"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            trajectory.write(out.resolve("trajectory.json"));
-            System.out.println("wrote " + out.resolve("result.json") + " and " + out.resolve("trajectory.json"));
-            if (!noFrames) {
-                int n = renderFrames(trajectory, out.resolve("frames"), width, height);
-                System.out.println("wrote " + n + " frames to " + out.resolve("frames"));
-                writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
-                System.out.println("wrote " + out.resolve("strip.png") + " (" + STRIP_FRAMES + " frames, start to end)");
+    /** Runs one trial from the hold, recording every {@code frameEvery}-th state. */
+    static Recorded record(SnapTrial trial, SnapParams p) {
+        Trajectory trajectory = Trajectory.of(trial.scene().world());
+        trajectory.record(trial.heldState());
+        int every = trial.scene().config().frameEvery();
+        SnapResult r = trial.run(p, (state, step) -> {
+            if (state.steps % every == 0) {
+                trajectory.record(state);
             }
+        });
+        return new Recorded(r, trajectory);
+    }
+
+    static void report(SnapResult r, SnapTrial trial) {
+        System.out.printf("alpha_end   %.3f deg (target %.1f)%n", r.alphaEnd(), trial.scene().config().alphaTargetDegrees());
+        System.out.printf("objective   %.3f deg%n", r.objective());
+        System.out.printf("min gap     %.3e m over the run (%s)%n", r.minGap(), r.minGap() > 0 ? "no interpenetration" : "INTERPENETRATION");
+        System.out.printf("card drop   %.2f mm below the hold at the end (%s)%n", 1e3 * r.cardDrop(), r.held() ? "held" : "DROPPED: no snap");
+        System.out.printf("newton      %d iterations over %d steps, %.0f per simulated second%n", r.newtonIterations(), r.steps(),
+                r.newtonIterationsPerSimulatedSecond());
+        System.out.printf("wall time   %.1f s: assembly %.1f s, contact %.1f s, solve %.1f s%n", r.wallSeconds(), r.assemblySeconds(),
+                r.contactSeconds(), r.solveSeconds());
+    }
+
+    /** The result's figures as JSON (what result.json holds besides the params). */
+    static ObjectNode resultJson(SnapResult r, SnapParams p, SnapTrial trial) {
+        ObjectNode o = Json.mapper().createObjectNode();
+        o.set("params", p.toJson());
+        o.put("mesh", trial.scene().config().meshName());
+        o.put("alphaEndDegrees", r.alphaEnd());
+        o.put("alphaTargetDegrees", trial.scene().config().alphaTargetDegrees());
+        o.put("objectiveDegrees", r.objective());
+        o.put("minGap", r.minGap());
+        o.put("cardDrop", r.cardDrop());
+        o.put("held", r.held());
+        o.put("steps", r.steps());
+        o.put("newtonIterations", r.newtonIterations());
+        o.put("wallSeconds", r.wallSeconds());
+        o.put("assemblySeconds", r.assemblySeconds());
+        o.put("contactSeconds", r.contactSeconds());
+        o.put("solveSeconds", r.solveSeconds());
+        return o;
+    }
+
+    /**
+     * Writes trajectory.json, then (unless {@code width} is 0) frames/ and strip.png, and last
+     * result.json, each atomically: a folder with result.json holds the whole recording.
+     */
+    static void write(Path out, Recorded run, SnapParams p, SnapTrial trial, int width, int height) throws IOException {
+        writeRecording(out, run, resultJson(run.result(), p, trial), width, height);
+    }
+
+    static void writeRecording(Path out, Recorded run, ObjectNode result, int width, int height) throws IOException {
+        Files.createDirectories(out);
+        run.trajectory().write(out.resolve("trajectory.json"));
+        System.out.println("wrote " + out.resolve("trajectory.json"));
+        if (width > 0) {
+            int n = renderFrames(run.trajectory(), out.resolve("frames"), width, height);
+            System.out.println("wrote " + n + " frames to " + out.resolve("frames"));
+            writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
+            System.out.println("wrote " + out.resolve("strip.png") + " (" + STRIP_FRAMES + " frames, start to end)");
         }
+        Path tmp = out.resolve("result.json.tmp");
+        Files.writeString(tmp, Json.pretty(result));
+        Files.move(tmp, out.resolve("result.json"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        System.out.println("wrote " + out.resolve("result.json"));
     }
 
     static final int STRIP_FRAMES = 5;
+
+
 
     /** Frames evenly spaced from the first to the last, side by side at half size (like thesis Fig. 4.8). */
     static void writeStrip(Path frames, int count, Path file) throws IOException {

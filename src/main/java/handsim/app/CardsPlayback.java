@@ -15,6 +15,16 @@ final class CardsPlayback {
     private CardsPlayback() {
     }
 
+    /** The trajectory of a study's best trial, as {@code cards optimize} records it. */
+    static Path bestTrajectory(Path study) {
+        Path file = study.resolve(CardsOptimize.BEST_DIR).resolve("trajectory.json");
+        if (!Files.isRegularFile(file)) {
+            throw new IllegalArgumentException("--study " + study + " holds no " + CardsOptimize.BEST_DIR
+                    + "/trajectory.json (is it a study folder of cards optimize, run to its end?)");
+        }
+        return file;
+    }
+
     static int play(Path file, int maxFrames) {
         Trajectory t;
         if (file != null) {

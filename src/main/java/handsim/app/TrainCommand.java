@@ -118,8 +118,8 @@ final class TrainCommand implements Callable<Integer> {
         }
     }
 
-    /** The config file with the {@code --set} overrides applied, validated. */
-    static TrainConfig load(Path file, List<String> overrides) {
+    /** {@code --set} options as dotted keys to JSON values, in order; a malformed one is named. */
+    static Map<String, String> keyValues(List<String> overrides) {
         Map<String, String> kv = new LinkedHashMap<>();
         for (String o : overrides) {
             int eq = o.indexOf('=');
@@ -128,6 +128,12 @@ final class TrainCommand implements Callable<Integer> {
             }
             kv.put(o.substring(0, eq), o.substring(eq + 1));
         }
+        return kv;
+    }
+
+    /** The config file with the {@code --set} overrides applied, validated. */
+    static TrainConfig load(Path file, List<String> overrides) {
+        Map<String, String> kv = keyValues(overrides);
         Json j = Json.load(file);
         return TrainConfig.parse(Json.of(file.toString(), Json.withOverrides(file.toString(), j.node(), kv)));
     }

@@ -43,13 +43,19 @@ final class ViewCommand implements Callable<Integer> {
             + "--out` to play (default: run the configured trial with coarse fingertips first)")
     Path trajectory;
 
+    @Option(names = "--study", paramLabel = "DIR", description = "with --scene snap: play the best trial of a `cards optimize` study folder")
+    Path study;
+
     @Override
     public Integer call() {
         if (scene != null) {
             if (!scene.equals("snap")) {
                 throw new IllegalArgumentException("--scene must be snap, got \"" + scene + "\"");
             }
-            return CardsPlayback.play(trajectory, benchmarkFrames);
+            if (trajectory != null && study != null) {
+                throw new IllegalArgumentException("--trajectory and --study: give one of them");
+            }
+            return CardsPlayback.play(study != null ? CardsPlayback.bestTrajectory(study) : trajectory, benchmarkFrames);
         }
         if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);

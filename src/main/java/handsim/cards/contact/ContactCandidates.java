@@ -24,6 +24,7 @@ final class ContactCandidates {
     // workspace
     private double[] vertexBoxes = new double[0];
     private double[] edgeBoxes = new double[0];
+    private double[] sweepEnd = new double[0];
 
     ContactCandidates(CollisionMesh mesh, double cellSize) {
         this.mesh = mesh;
@@ -153,14 +154,19 @@ final class ContactCandidates {
     /**
      * The largest fraction α ≤ 1 of the update p such that the motion from x to x + α p keeps every
      * pair apart by more than its offset, by additive CCD with rescaling η (Codim-IPC uses 0.9).
+     * Its candidates, the pairs whose swept boxes come within {@code radius}, stay for the next
+     * {@link ContactSet#buildAlongSweep}.
      */
-    double largestSafeStep(double[] x, double[] p, double eta) {
+    double largestSafeStep(double[] x, double[] p, double eta, double radius) {
         int n = x.length;
-        double[] x1 = new double[n];
+        if (sweepEnd.length != n) {
+            sweepEnd = new double[n];
+        }
+        double[] x1 = sweepEnd;
         for (int i = 0; i < n; i++) {
             x1[i] = x[i] + p[i];
         }
-        find(x, x1, mesh.maxOffset());
+        find(x, x1, radius);
         double alpha = 1;
         double[] a0 = new double[12];
         double[] a1 = new double[12];

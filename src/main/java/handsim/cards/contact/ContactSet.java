@@ -17,6 +17,10 @@ import java.util.Arrays;
  * each close pair is reduced to its closest features (vertex–vertex, edge–vertex, face–vertex,
  * edge–edge, and vertex–ground) and duplicates, such as the edge–vertex pair reached from both
  * faces of the edge, are merged by sorting their keys, which also fixes a deterministic order.
+ * A merged contact keeps its multiplicity, the number of pairs that reduced to it, and its
+ * barrier counts that often (as the IPC Toolkit's constraint weights): the sum stays the sum over
+ * all vertex–face and edge–edge pairs, which is continuous where a pair's closest feature
+ * changes; dropping the repeats would make E jump there, and the line search stall.
  * Nearly parallel edge pairs keep their edge–edge stencil with the mollifier.
  *
  * <p>The broad phase and the continuous collision detection over swept boxes are {@link
@@ -41,6 +45,8 @@ public final class ContactSet {
     int[] nodes = new int[4 * 256];
     double[] xi = new double[256];
     double[] epsX = new double[256];
+    /** how many candidate pairs (vertex–face, edge–edge) reduce to each contact: its barrier counts that often */
+    int[] multiplicity = new int[256];
     DistanceType[] mollified = new DistanceType[256];
     private long[] keys = new long[256];
     private int[] order = new int[256];
@@ -94,8 +100,21 @@ public final class ContactSet {
 
     /** Finds the barrier-active contacts at x. */
     public void build(double[] x) {
-        double radius = mesh.maxOffset() + dhat;
-        candidates.find(x, null, radius);
+        candidates.find(x, null, mesh.maxOffset() + dhat);
+        narrowPhase(x);
+    }
+
+    /**
+     * Finds the barrier-active contacts at a point x + α p (0 ≤ α ≤ 1) of the motion last passed
+     * to {@link #largestSafeStep}: its candidates, gathered over the swept boxes grown by the
+     * activation distance, hold every pair that can be active anywhere along that motion, so
+     * the line search needs no broad phase of its own.
+     */
+    public void buildAlongSweep(double[] x) {
+        narrowPhase(x);
+    }
+
+    private void narrowPhase(double[] x) {
         int ptCount = candidates.ptCount;
         int[] ptPairs = candidates.ptPairs;
         int eeCount = candidates.eeCount;
@@ -174,6 +193,7 @@ public final class ContactSet {
             xi = Arrays.copyOf(xi, cap);
             epsX = Arrays.copyOf(epsX, cap);
             mollified = Arrays.copyOf(mollified, cap);
+            multiplicity = Arrays.copyOf(multiplicity, cap);
             keys = Arrays.copyOf(keys, cap);
             order = Arrays.copyOf(order, cap);
         }
@@ -204,6 +224,7 @@ public final class ContactSet {
         }
         xi[count] = offset;
         epsX[count] = eps;
+        multiplicity[count] = 1;
         mollified[count] = molly;
         // kind in the top bits, then up to four 15-bit node indices
         long key = (long) k << 60;
@@ -268,11 +289,13 @@ public final class ContactSet {
         double[] xi2 = new double[count];
         double[] eps2 = new double[count];
         DistanceType[] m2 = new DistanceType[count];
+        int[] mult2 = new int[count];
         long[] key2 = new long[count];
         int out = 0;
         for (int i = 0; i < count; i++) {
             int s = idx[i];
             if (out > 0 && key2[out - 1] == keys[s]) {
+                mult2[out - 1] += multiplicity[s];
                 continue;
             }
             k2[out] = kind[s];
@@ -280,6 +303,7 @@ public final class ContactSet {
             xi2[out] = xi[s];
             eps2[out] = epsX[s];
             m2[out] = mollified[s];
+            mult2[out] = multiplicity[s];
             key2[out] = keys[s];
             out++;
         }
@@ -288,6 +312,7 @@ public final class ContactSet {
         System.arraycopy(xi2, 0, xi, 0, out);
         System.arraycopy(eps2, 0, epsX, 0, out);
         System.arraycopy(m2, 0, mollified, 0, out);
+        System.arraycopy(mult2, 0, multiplicity, 0, out);
         System.arraycopy(key2, 0, keys, 0, out);
         count = out;
     }
@@ -371,7 +396,7 @@ public final class ContactSet {
             if (s <= 0) {
                 return Double.POSITIVE_INFINITY;
             }
-            e += mollifier(c, w.pos, null, null) * Barrier.value(s, activation(xi[c]));
+            e += multiplicity[c] * mollifier(c, w.pos, null, null) * Barrier.value(s, activation(xi[c]));
         }
         return kappa * e;
     }
@@ -393,11 +418,12 @@ public final class ContactSet {
             double m = mollifier(c, w.pos, gradM, null);
             double b1 = Barrier.slope(s, sh);
             double b = molly ? Barrier.value(s, sh) : 0;
+            double weight = kappa * multiplicity[c];
             for (int i = 0; i < k; i++) {
                 int n = 3 * nodes[4 * c + i];
                 for (int d = 0; d < 3; d++) {
                     double gm = molly ? gradM[3 * i + d] : 0;
-                    g[n + d] += kappa * (m * b1 * gradD[3 * i + d] + b * gm);
+                    g[n + d] += weight * (m * b1 * gradD[3 * i + d] + b * gm);
                 }
             }
         }
@@ -426,13 +452,14 @@ public final class ContactSet {
             double b2 = Barrier.curvature(s, sh);
             boolean molly = kind[c] == EE && mollified[c] != null;
             double m = molly ? EdgeEdgeMollifier.evaluate(w.pos, epsX[c], gradM, hessM) : 1;
+            double weight = kappa * multiplicity[c];
             for (int i = 0; i < n; i++) {
                 for (int j = 0; j < n; j++) {
                     double h = m * (b2 * gradD[i] * gradD[j] + b1 * hessD[i * n + j]);
                     if (molly) {
                         h += b1 * (gradM[i] * gradD[j] + gradD[i] * gradM[j]) + b * hessM[i * n + j];
                     }
-                    local[i * n + j] = kappa * h;
+                    local[i * n + j] = weight * h;
                 }
             }
             if (project) {
@@ -468,6 +495,7 @@ public final class ContactSet {
      * pair apart by more than its offset ({@link ContactCandidates#largestSafeStep}).
      */
     public double largestSafeStep(double[] x, double[] p, double eta) {
-        return candidates.largestSafeStep(x, p, eta);
+        // grown by the activation distance too: the same candidates serve buildAlongSweep
+        return candidates.largestSafeStep(x, p, eta, mesh.maxOffset() + dhat);
     }
 }

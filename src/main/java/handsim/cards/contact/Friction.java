@@ -49,7 +49,7 @@ public final class Friction {
             int k = set.nodeCount(c);
             double d2 = set.distance2(c, xt, gradD, null);
             double s = d2 - set.xi[c] * set.xi[c];
-            double force = kappa / (h * h) * Math.abs(Barrier.slope(s, set.activation(set.xi[c]))) * 2 * Math.sqrt(d2);
+            double force = set.multiplicity[c] * kappa / (h * h) * Math.abs(Barrier.slope(s, set.activation(set.xi[c]))) * 2 * Math.sqrt(d2);
             double coefficient = set.kind[c] == ContactSet.GROUND
                     ? set.mesh().groundFriction(set.node(c, 0))
                     : set.mesh().frictionBetween(set.node(c, 0), set.node(c, k - 1));

@@ -19,6 +19,12 @@ import org.ojalgo.matrix.store.R064CSC;
  */
 public final class SparseSpdSystem {
 
+    /** The numeric factorisation: handsim's supernodal LLᵀ, or ojAlgo's QDLDL (both after the same ordering). */
+    public enum Factorisation { SUPERNODAL, QDLDL }
+
+    private final Factorisation factorisation;
+    private final boolean parallel;
+    private SupernodalCholesky supernodal;
     private final int nodes;
     private final int dofs;
     private long[] pairs = new long[0];
@@ -34,14 +40,47 @@ public final class SparseSpdSystem {
     private double[] values;
     private R064CSC matrix;
     private EliminationTree tree;
+    /** system dof of each permuted dof */
+    private final int[] systemDof;
     private final SparseQDLDL ldl = new SparseQDLDL();
     private int patternBuilds;
 
+    // the last numeric factorisation: its node permutation and diagonal scaling (ldl holds L and D)
+    private boolean factored;
+    private final int[] factorPerm;
+    private final double[] factorScaling;
+    private boolean refreshFactor;
+    private final double[] cgX;
+    private final double[] cgR;
+    private final double[] cgZ;
+    private final double[] cgP;
+    private final double[] cgQ;
+    private final double[] work;
+    private int factorisations;
+    private long cgIterations;
+    private int shiftedFactorisations;
+
     public SparseSpdSystem(int nodes) {
+        this(nodes, Factorisation.SUPERNODAL, false);
+    }
+
+    /** @param parallel factor on two threads where the elimination tree allows (bit-identical either way) */
+    public SparseSpdSystem(int nodes, Factorisation factorisation, boolean parallel) {
+        this.factorisation = factorisation;
+        this.parallel = parallel;
         this.nodes = nodes;
         this.dofs = 3 * nodes;
         this.perm = new int[nodes];
         this.inverse = new int[nodes];
+        this.systemDof = new int[dofs];
+        this.factorPerm = new int[nodes];
+        this.factorScaling = new double[dofs];
+        this.cgX = new double[dofs];
+        this.cgR = new double[dofs];
+        this.cgZ = new double[dofs];
+        this.cgP = new double[dofs];
+        this.cgQ = new double[dofs];
+        this.work = new double[dofs];
     }
 
     /** The key of an unordered node pair. */
@@ -61,6 +100,7 @@ public final class SparseSpdSystem {
             return false;
         }
         pairs = sortedPairs.clone();
+        refreshFactor = true;
         order();
         layout();
         patternBuilds++;
@@ -100,6 +140,12 @@ public final class SparseSpdSystem {
         graph.nz = -1;
         graph.nzmax = idx.length;
         int[] amd = nodes > 1 ? Dcs_amd.cs_amd(1, graph) : new int[] {0};
+        // a postorder of AMD's elimination tree: the same fill, each subtree's nodes consecutive
+        int[][] neighbours = new int[nodes][];
+        for (int i = 0; i < nodes; i++) {
+            neighbours[i] = Arrays.copyOfRange(idx, p[i], p[i + 1]);
+        }
+        amd = SupernodalCholesky.postorder(neighbours, amd);
         for (int k = 0; k < nodes; k++) {
             inverse[k] = amd[k];
             perm[amd[k]] = k;
@@ -151,8 +197,17 @@ public final class SparseSpdSystem {
             }
         }
         values = new double[base[nodes]];
-        matrix = new R064CSC(dofs, dofs, values, indices, pointers);
-        tree = ldl.computeEliminationTree(matrix);
+        for (int k = 0; k < nodes; k++) {
+            for (int c = 0; c < 3; c++) {
+                systemDof[3 * k + c] = 3 * inverse[k] + c;
+            }
+        }
+        if (factorisation == Factorisation.SUPERNODAL) {
+            supernodal = new SupernodalCholesky(lower, pointers, parallel);
+        } else {
+            matrix = new R064CSC(dofs, dofs, values, indices, pointers);
+            tree = ldl.computeEliminationTree(matrix);
+        }
     }
 
     /** Zeroes the values, keeping the pattern. */
@@ -222,6 +277,7 @@ public final class SparseSpdSystem {
      * LDLᵀ's pivot test is relative to the largest pivot.
      */
     public boolean factor() {
+        factored = false;
         if (scaling == null || scaling.length != dofs) {
             scaling = new double[dofs];
         }
@@ -238,10 +294,25 @@ public final class SparseSpdSystem {
                 values[at] *= scaling[indices[at]] * sj;
             }
         }
-        return ldl.factor(matrix, tree) && ldl.isSolvable();
+        return keepFactor(numericFactor());
+    }
+
+    private boolean numericFactor() {
+        return factorisation == Factorisation.SUPERNODAL ? supernodal.factor(values) : ldl.factor(matrix, tree) && ldl.isSolvable();
     }
 
     private double[] scaling;
+
+    /** Records a successful factorisation's permutation and scaling, for solves and as a preconditioner. */
+    private boolean keepFactor(boolean ok) {
+        factored = ok;
+        if (ok) {
+            factorisations++;
+            System.arraycopy(perm, 0, factorPerm, 0, nodes);
+            System.arraycopy(scaling, 0, factorScaling, 0, dofs);
+        }
+        return ok;
+    }
 
     /**
      * After a failed {@link #factor()}: adds {@code delta} to the (unit, scaled) diagonal and
@@ -253,24 +324,148 @@ public final class SparseSpdSystem {
         for (int j = 0; j < dofs; j++) {
             values[pointers[j + 1] - 1] += delta;
         }
-        return ldl.factor(matrix, tree) && ldl.isSolvable();
+        shiftedFactorisations++;
+        return keepFactor(numericFactor());
     }
 
     /** Solves H x = b for the last factorisation; {@code b} (system order) is overwritten by x. */
     public void solve(double[] b, double[] work) {
+        applyFactor(b, b, work);
+    }
+
+    /** out = (last factorisation)⁻¹ b, both in system order (they may be the same array). */
+    private void applyFactor(double[] b, double[] out, double[] work) {
         for (int i = 0; i < nodes; i++) {
-            int pi = perm[i];
+            int pi = factorPerm[i];
             for (int c = 0; c < 3; c++) {
-                work[3 * pi + c] = b[3 * i + c] * scaling[3 * pi + c];
+                work[3 * pi + c] = b[3 * i + c] * factorScaling[3 * pi + c];
             }
         }
-        ldl.ftran(work);
+        if (factorisation == Factorisation.SUPERNODAL) {
+            supernodal.solve(work);
+        } else {
+            ldl.ftran(work);
+        }
         for (int i = 0; i < nodes; i++) {
-            int pi = perm[i];
+            int pi = factorPerm[i];
             for (int c = 0; c < 3; c++) {
-                b[3 * i + c] = work[3 * pi + c] * scaling[3 * pi + c];
+                out[3 * i + c] = work[3 * pi + c] * factorScaling[3 * pi + c];
             }
         }
+    }
+
+    /**
+     * Solves H x = b for the values assembled since the last {@link #clear()} or {@link #sum};
+     * {@code b} (system order) is overwritten by x. With a factorisation at hand it first tries
+     * conjugate gradients on H preconditioned by that factorisation (of an earlier H, perhaps of
+     * another pattern): when the preconditioned residual falls below {@code cgTolerance} times its
+     * start within {@code cgMaxIterations}, that is the solution. Otherwise, or with
+     * {@code cgMaxIterations} 0, H is factored afresh (with a growing diagonal shift if its scaled
+     * pivots vanish) and solved directly; a CG solve that needed more than half the allowed
+     * iterations makes the next call factor afresh. Returns false if H cannot be factored.
+     */
+    public boolean solve(double[] b, double cgTolerance, int cgMaxIterations) {
+        if (factored && !refreshFactor && cgMaxIterations > 0) {
+            int used = conjugateGradients(b, cgTolerance, cgMaxIterations);
+            if (used > 0) {
+                cgIterations += used;
+                refreshFactor = used > cgMaxIterations / 2;
+                System.arraycopy(cgX, 0, b, 0, dofs);
+                return true;
+            }
+            cgIterations += cgMaxIterations;
+        }
+        refreshFactor = false;
+        boolean ok = factor();
+        for (double shift = 1e-10; !ok && shift < 1; shift *= 100) {
+            ok = refactorWithShift(shift);
+        }
+        if (ok) {
+            solve(b, work);
+        }
+        return ok;
+    }
+
+    /** Preconditioned CG for H x = b into cgX from x = 0; the iterations it took, or 0 if it did not converge. */
+    private int conjugateGradients(double[] b, double tolerance, int maxIterations) {
+        Arrays.fill(cgX, 0);
+        System.arraycopy(b, 0, cgR, 0, dofs);
+        applyFactor(cgR, cgZ, work);
+        System.arraycopy(cgZ, 0, cgP, 0, dofs);
+        double rz = dot(cgR, cgZ);
+        double target = tolerance * tolerance * rz;
+        if (rz == 0) {
+            return 1;
+        }
+        for (int k = 1; k <= maxIterations; k++) {
+            multiply(cgP, cgQ);
+            double pq = dot(cgP, cgQ);
+            if (!(pq > 0)) {
+                return 0;
+            }
+            double a = rz / pq;
+            for (int i = 0; i < dofs; i++) {
+                cgX[i] += a * cgP[i];
+                cgR[i] -= a * cgQ[i];
+            }
+            applyFactor(cgR, cgZ, work);
+            double rzNext = dot(cgR, cgZ);
+            if (rzNext <= target) {
+                return k;
+            }
+            double beta = rzNext / rz;
+            for (int i = 0; i < dofs; i++) {
+                cgP[i] = cgZ[i] + beta * cgP[i];
+            }
+            rz = rzNext;
+        }
+        return 0;
+    }
+
+    /** y = H x for the assembled (unscaled) values, in system order. */
+    private void multiply(double[] x, double[] y) {
+        Arrays.fill(y, 0);
+        for (int j = 0; j < dofs; j++) {
+            int sj = systemDof[j];
+            double xj = x[sj];
+            double yj = 0;
+            int last = pointers[j + 1] - 1;
+            for (int at = pointers[j]; at < last; at++) {
+                int si = systemDof[indices[at]];
+                double v = values[at];
+                y[si] += v * xj;
+                yj += v * x[si];
+            }
+            y[sj] += yj + values[last] * xj;
+        }
+    }
+
+    private static double dot(double[] a, double[] b) {
+        double s = 0;
+        for (int i = 0; i < a.length; i++) {
+            s += a[i] * b[i];
+        }
+        return s;
+    }
+
+    /** Drops the kept factorisation: the next {@link #solve(double[], double, int)} factors afresh. */
+    public void forgetFactorisation() {
+        refreshFactor = true;
+    }
+
+    /** Numeric factorisations so far (shifted ones included). */
+    public int factorisations() {
+        return factorisations;
+    }
+
+    /** Conjugate-gradient iterations so far (a failed CG solve counts its limit). */
+    public long cgIterations() {
+        return cgIterations;
+    }
+
+    /** Factorisations that needed a diagonal shift. */
+    public int shiftedFactorisations() {
+        return shiftedFactorisations;
     }
 
     /**

@@ -1,6 +1,7 @@
 package handsim.cards.sim;
 
 import handsim.cards.contact.CollisionMesh.FrictionTable;
+import handsim.cards.linalg.SparseSpdSystem;
 import handsim.config.Json;
 import java.nio.file.Path;
 
@@ -26,13 +27,16 @@ public final class CardsConfig {
                 j.number("dhat", 1e-7, 1e-2),
                 j.number("newtonTolerance", 1e-9, 1.0),
                 j.integer("maxNewtonIterations", 1, 10_000),
+                j.number("cgTolerance", 1e-12, 0.5),
+                j.integer("cgMaxIterations", 0, 1000),
                 j.number("ccdRescaling", 0.1, 1.0),
                 new FrictionTable(f.number("cardCard", 0, 5), f.number("skin", 0, 5), f.number("ground", 0, 5)),
                 j.number("frictionEpsV", 1e-8, 1.0),
                 j.number("kappaScale", 1e-3, 1e20),
                 j.numbers("gravity", 3),
                 j.number("hashCell", 1e-5, 1.0),
-                j.bool("parallelAssembly", false));
+                SparseSpdSystem.Factorisation.valueOf(j.choice("factorisation", "supernodal", "qdldl").toUpperCase(java.util.Locale.ROOT)),
+                j.bool("parallel", false));
         f.requireNoUnknownFields();
         j.requireNoUnknownFields();
         return s;

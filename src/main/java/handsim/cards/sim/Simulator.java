@@ -35,7 +35,6 @@ public final class Simulator {
     private final double[] grad;
     private final double[] rhs;
     private final double[] step;
-    private final double[] work;
     private final double[] translation = new double[3];
     private final StepStats total = new StepStats();
     private long[] pattern = new long[0];
@@ -49,8 +48,8 @@ public final class Simulator {
         this.bones = bones;
         this.contacts = new ContactSet(world.collision, settings.dhat(), settings.hashCell());
         this.friction = new Friction(settings.frictionEpsV());
-        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallelAssembly());
-        this.system = new SparseSpdSystem(world.freeCount);
+        this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallel());
+        this.system = new SparseSpdSystem(world.freeCount, settings.factorisation(), settings.parallel());
         this.n = 3 * world.nodeCount();
         xt = new double[n];
         x = new double[n];
@@ -58,7 +57,6 @@ public final class Simulator {
         grad = new double[n];
         rhs = new double[3 * world.freeCount];
         step = new double[n];
-        work = new double[3 * world.freeCount];
     }
 
     /**
@@ -108,21 +106,18 @@ public final class Simulator {
         double energy = potential.value(x);
         st.assemblyNanos += System.nanoTime() - e0;
         boolean converged = false;
+        // each step starts from its state alone (so a checkpoint resumes bit for bit): the exact
+        // pattern, and no factorisation kept from the step before
+        system.forgetFactorisation();
         for (int it = 0; it < settings.maxNewtonIterations(); it++) {
             st.newtonIterations++;
             long a0 = System.nanoTime();
-            assemble();
+            assemble(it == 0);
             long a1 = System.nanoTime();
             st.assemblyNanos += a1 - a0;
-            boolean factored = system.factor();
-            for (double shift = 1e-10; !factored && shift < 1; shift *= 100) {
-                factored = system.refactorWithShift(shift);
-                st.shiftedFactorisations++;
-            }
-            if (!factored) {
+            if (!system.solve(rhs, settings.cgTolerance(), settings.cgMaxIterations())) {
                 throw new IllegalStateException("Newton system not positive definite at step " + state.steps);
             }
-            system.solve(rhs, work);
             long a2 = System.nanoTime();
             st.solveNanos += a2 - a1;
             double largest = scatterStep();
@@ -147,12 +142,15 @@ public final class Simulator {
             }
             if (!(e <= energy)) {
                 // no decrease along the Newton direction: keep the current iterate
-                contacts.build(x);
+                contacts.buildAlongSweep(x);
                 break;
             }
             System.arraycopy(trial, 0, x, 0, n);
             energy = e;
-            updateStiffness(state);
+            if (updateStiffness(state)) {
+                // E changed with κ: the next line search compares against E at x with the new κ
+                energy = potential.value(x);
+            }
         }
         if (!converged) {
             st.unconvergedSteps++;
@@ -167,14 +165,17 @@ public final class Simulator {
         st.maxContacts = contacts.size();
         st.minGap = contacts.minGap(x);
         st.patternBuilds = system.patternBuilds() - total.patternBuilds;
+        st.factorisations = system.factorisations() - total.factorisations;
+        st.cgIterations = system.cgIterations() - total.cgIterations;
+        st.shiftedFactorisations = system.shiftedFactorisations() - total.shiftedFactorisations;
         total.add(st);
         return st;
     }
 
-    /** E at p with the contacts rebuilt there. */
+    /** E at p, a point of the last CCD sweep, with the contacts rebuilt there. */
     private double evaluate(double[] p, StepStats st) {
         long c0 = System.nanoTime();
-        contacts.build(p);
+        contacts.buildAlongSweep(p);
         long c1 = System.nanoTime();
         double e = potential.value(p);
         st.contactNanos += c1 - c0;
@@ -211,9 +212,9 @@ public final class Simulator {
         }
     }
 
-    /** −∇E into rhs (free nodes) and the projected Hessian into the system. */
-    private void assemble() {
-        updatePattern();
+    /** −∇E into rhs (free nodes) and the projected Hessian into the system; the exact pattern at a step's start. */
+    private void assemble(boolean stepStart) {
+        updatePattern(stepStart);
         potential.assemble(x, grad, system, true);
         for (int i = 0; i < n / 3; i++) {
             int f = world.freeIndex[i];
@@ -225,29 +226,47 @@ public final class Simulator {
         }
     }
 
-    /** Elastic couplings plus those of the current contacts and lagged friction. */
-    private void updatePattern() {
+    /**
+     * The Newton system's pattern: the elastic couplings plus those of the current contacts and
+     * lagged friction. Contacts come and go from one Newton iteration to the next, and a new
+     * pattern costs a new ordering and symbolic factorisation, so within a step the pattern is
+     * kept while it holds every coupling needed and at most {@link #SPARE_PAIRS} (or as many as
+     * the contacts need, if more) pairs no longer needed, which carry zeros; otherwise it becomes
+     * the needed couplings plus the kept ones within that allowance, or just the needed ones. At
+     * a step's start ({@code exact}) it is just the needed couplings.
+     */
+    private void updatePattern(boolean exact) {
         couplingCount = 0;
         contacts.couplings(this::couple);
         friction.couplings(this::couple);
         long[] keys = Arrays.copyOf(couplingKeys, couplingCount);
         Arrays.sort(keys);
-        long[] el = world.elasticPairs;
-        long[] merged = new long[el.length + keys.length];
+        long[] needed = union(world.elasticPairs, keys);
+        int allowance = exact ? 0 : Math.max(SPARE_PAIRS, needed.length - world.elasticPairs.length);
+        if (pattern.length - needed.length <= allowance && union(pattern, needed).length == pattern.length) {
+            return;
+        }
+        long[] grown = union(pattern, needed);
+        pattern = grown.length - needed.length <= allowance ? grown : needed;
+        system.setPattern(pattern);
+    }
+
+    /** Pairs kept in the pattern beyond those needed, at least. */
+    private static final int SPARE_PAIRS = 256;
+
+    /** The sorted union of two sorted arrays of distinct keys. */
+    private static long[] union(long[] a, long[] b) {
+        long[] merged = new long[a.length + b.length];
         int i = 0;
         int j = 0;
         int m = 0;
-        while (i < el.length || j < keys.length) {
-            long next = j >= keys.length || (i < el.length && el[i] <= keys[j]) ? el[i++] : keys[j++];
+        while (i < a.length || j < b.length) {
+            long next = j >= b.length || (i < a.length && a[i] <= b[j]) ? a[i++] : b[j++];
             if (m == 0 || merged[m - 1] != next) {
                 merged[m++] = next;
             }
         }
-        merged = Arrays.copyOf(merged, m);
-        if (!Arrays.equals(merged, pattern)) {
-            pattern = merged;
-            system.setPattern(pattern);
-        }
+        return Arrays.copyOf(merged, m);
     }
 
     private void couple(int a, int b) {
@@ -300,14 +319,16 @@ public final class Simulator {
         state.kappa = kappa;
     }
 
-    /** Doubles κ while the smallest gap d − ξ keeps shrinking below ε_d = 1e-9 (bbox diagonal + ξ). */
-    private void updateStiffness(SimState state) {
+    /** Doubles κ while the smallest gap d − ξ keeps shrinking below ε_d = 1e-9 (bbox diagonal + ξ); whether it did. */
+    private boolean updateStiffness(SimState state) {
         double eps = 1e-9 * (world.bboxDiagonal + world.collision.maxOffsetForStiffness());
         double min = contacts.minGap(x);
-        if (state.previousMinGap2 < eps && min < eps && min < state.previousMinGap2) {
+        boolean grows = state.previousMinGap2 < eps && min < eps && min < state.previousMinGap2 && state.kappa < state.kappaMax;
+        if (grows) {
             state.kappa = Math.min(state.kappaMax, 2 * state.kappa);
             potential.setKappa(state.kappa);
         }
         state.previousMinGap2 = min;
+        return grows;
     }
 }

@@ -13,8 +13,11 @@ public final class StepStats {
     public long lineSearchHalvings;
     public long unconvergedSteps;
     public long patternBuilds;
-    /** factorisations that needed a diagonal shift to find positive pivots */
+    /** numeric factorisations of the Newton system, and those that needed a diagonal shift to find positive pivots */
+    public long factorisations;
     public long shiftedFactorisations;
+    /** conjugate-gradient iterations of Newton solves preconditioned by an earlier factorisation */
+    public long cgIterations;
     public long assemblyNanos;
     public long contactNanos;
     public long solveNanos;
@@ -27,7 +30,9 @@ public final class StepStats {
         lineSearchHalvings += o.lineSearchHalvings;
         unconvergedSteps += o.unconvergedSteps;
         patternBuilds += o.patternBuilds;
+        factorisations += o.factorisations;
         shiftedFactorisations += o.shiftedFactorisations;
+        cgIterations += o.cgIterations;
         assemblyNanos += o.assemblyNanos;
         contactNanos += o.contactNanos;
         solveNanos += o.solveNanos;

@@ -2,15 +2,13 @@ package handsim.cards.sleight;
 
 import handsim.config.Json;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
-import java.util.Map;
 
 /** The Card Snapping scene from configs/cards/snap.json, validated field by field. */
 public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int cellsShort, int roundedCorners,
                          double gapFraction, double[] semiAxes, String meshName, int[] grid, int softLayers,
                          double pinchBelowTop, double initialGap, double holdDepth, double warmup,
-                         double duration, double alphaTargetDegrees, int frameEvery, SnapParams defaults,
-                         Map<String, double[]> ranges) {
+                         double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
+                         int frameEvery, SnapParams defaults) {
 
     public static SnapConfig load(Path file) {
         return parse(Json.load(file), null);
@@ -55,21 +53,15 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
         double duration = trial.number("duration", 0.01, 100);
         SnapParams defaults = SnapParams.parse(j.get("params"));
         defaults.validate(duration, j.source() + ": params");
-        Json r = j.get("ranges");
-        r.allow("comment");
-        Map<String, double[]> ranges = new LinkedHashMap<>();
-        for (String name : new String[] {"t0", "t1", "vp", "t2", "t3", "vs"}) {
-            ranges.put(name, r.range(name));
-        }
-        r.requireNoUnknownFields();
         SnapConfig c = new SnapConfig(
                 card.number("length", 1e-3, 1), card.number("width", 1e-3, 1), cells[0], cells[1],
                 card.integer("roundedCorners", 0, 4), card.number("gapFraction", 0, 10),
                 tip.numbers("semiAxes", 3), chosen, grid, tip.integer("softLayers", 1, 100),
                 tip.number("pinchBelowTop", 0, 1),
                 hold.number("initialGap", 0, 0.01), hold.number("depth", 0, 0.01), hold.number("warmup", 0, 10),
-                duration, trial.number("alphaTarget", 0, 180), trial.integer("frameEvery", 1, 10_000),
-                defaults, ranges);
+                duration, trial.number("alphaTarget", 0, 180), trial.number("dropLimit", 0, 10), trial.number("droppedObjective", 0, 1e6),
+                trial.integer("frameEvery", 1, 10_000),
+                defaults);
         for (double a : c.semiAxes) {
             if (!(a > 0)) {
                 throw tip.fieldError("semiAxes", "must be positive, got " + java.util.Arrays.toString(c.semiAxes));

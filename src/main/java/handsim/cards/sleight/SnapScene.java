@@ -35,6 +35,7 @@ public final class SnapScene {
     private final SoftWorld world;
     private final int[][] cardTop;
     private final int[][] cardBottom;
+    private final int[][] cardNodes;
 
     public SnapScene(SnapConfig config, Materials materials, SolverSettings settings) {
         this.config = config;
@@ -69,11 +70,13 @@ public final class SnapScene {
             }
         }
         cardTop = new int[2][];
+        cardNodes = new int[2][];
         cardBottom = new int[2][];
         for (int c = 0; c < 2; c++) {
             int first = world.body("card" + c).firstNode();
             cardTop[c] = top.stream().mapToInt(i -> first + i).toArray();
             cardBottom[c] = bottom.stream().mapToInt(i -> first + i).toArray();
+            cardNodes[c] = java.util.stream.IntStream.range(first, first + card.vertexCount()).toArray();
         }
     }
 
@@ -119,6 +122,15 @@ public final class SnapScene {
         double[] a = {top[0] - bottom[0], top[1] - bottom[1], top[2] - bottom[2]};
         double len = Math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
         return new double[] {a[0] / len, a[1] / len, a[2] / len};
+    }
+
+    /** How far each card's centroid lies below where it was in {@code reference} (m); the larger of the two. */
+    public double cardDrop(SimState reference, SimState state) {
+        double drop = 0;
+        for (int c = 0; c < 2; c++) {
+            drop = Math.max(drop, centroid(reference.x, cardNodes[c])[2] - centroid(state.x, cardNodes[c])[2]);
+        }
+        return drop;
     }
 
     /** α: the angle between the two cards' long axes (degrees). */

@@ -41,7 +41,7 @@ import java.util.stream.Stream;
  * A TPE study of an {@link Objective} over a {@link StudyConfig}'s search space, kept in a
  * folder:
  * <pre>
- * study.json               config, seed, sampler, the provenance of every run
+ * study.json               config, seed, sampler, what the objective is, the provenance of every run
  * trials/trial-0007.json   one file per finished trial, written atomically
  * best.json                the best trial (one objective) or the Pareto front (several)
  * history.png              objective per trial and best so far (thesis Fig. 4.9);
@@ -94,6 +94,16 @@ public final class Study {
      * is recorded in study.json for this run.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode provenance) throws IOException {
+        return openOrCreate(dir, config, seed, Json.mapper().createObjectNode(), provenance);
+    }
+
+    /**
+     * {@link #openOrCreate(Path, StudyConfig, long, ObjectNode)} for an objective described by
+     * {@code objective} (say the sleight's scene, mesh and materials), recorded in study.json:
+     * a resume requires the same description as well, since the trials found would not be the
+     * ones this objective gives otherwise.
+     */
+    public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode objective, ObjectNode provenance) throws IOException {
         Path file = dir.resolve(STUDY_FILE);
         Study study;
         if (Files.exists(file)) {
@@ -102,6 +112,10 @@ public final class Study {
                 throw new ConfigException(file + ": seed: the study was created with seed " + study.seed + ", not " + seed);
             }
             String difference = firstDifference(study.config.toJson(), config.toJson(), "config");
+            if (difference == null) {
+                JsonNode recorded = study.studyJson.get("objective");
+                difference = firstDifference(recorded == null ? Json.mapper().createObjectNode() : recorded, objective, "objective");
+            }
             if (difference != null) {
                 throw new ConfigException(file + ": " + difference + " (a study resumes only with the config it was created with)");
             }
@@ -111,6 +125,9 @@ public final class Study {
             json.put("seed", seed);
             json.set("config", config.toJson());
             json.set("sampler", samplerDescription(config));
+            if (!objective.isEmpty()) {
+                json.set("objective", objective.deepCopy());
+            }
             json.putArray("runs");
             study = new Study(dir, config, seed, json);
         }

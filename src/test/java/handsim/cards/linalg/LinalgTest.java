@@ -81,7 +81,14 @@ class LinalgTest {
     }
 
     @Test
-    void sparseLdlSolvesLikeADenseCholeskyAndReusesItsPattern() {
+    void sparseFactorisationsSolveLikeADenseCholeskyAndReuseTheirPattern() {
+        // ojAlgo's QDLDL, handsim's supernodal LLᵀ on one thread and on two
+        solvesLikeADenseCholesky(SparseSpdSystem.Factorisation.QDLDL, false);
+        solvesLikeADenseCholesky(SparseSpdSystem.Factorisation.SUPERNODAL, false);
+        solvesLikeADenseCholesky(SparseSpdSystem.Factorisation.SUPERNODAL, true);
+    }
+
+    private static void solvesLikeADenseCholesky(SparseSpdSystem.Factorisation factorisation, boolean parallel) {
         Random rng = new Random(11);
         int nodes = 40;
         TreeSet<Long> keys = new TreeSet<>();
@@ -93,7 +100,7 @@ class LinalgTest {
             }
         }
         long[] pairs = keys.stream().mapToLong(Long::longValue).toArray();
-        SparseSpdSystem sys = new SparseSpdSystem(nodes);
+        SparseSpdSystem sys = new SparseSpdSystem(nodes, factorisation, parallel);
         assertTrue(sys.setPattern(pairs));
         assertFalse(sys.setPattern(pairs.clone()), "an unchanged pattern is kept");
         for (int round = 0; round < 2; round++) {
@@ -133,7 +140,7 @@ class LinalgTest {
             double[] x = b.clone();
             sys.solve(x, new double[3 * nodes]);
             for (int i = 0; i < x.length; i++) {
-                assertEquals(expected[i], x[i], 1e-10, "solution entry " + i + " in round " + round);
+                assertEquals(expected[i], x[i], 1e-10, factorisation + ": solution entry " + i + " in round " + round);
             }
         }
         assertEquals(1, sys.patternBuilds());

@@ -13,7 +13,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * A reduced Card Snapping trial (coarse 7 x 5 x 5 fingertips, 0.3 s): the hold keeps both
- * cards, the run never lets surfaces touch, and the slide is what turns the cards apart.
+ * cards, the run never lets surfaces touch, the slide is what turns the cards apart, and a slide
+ * too far lets them fall, which is no snap.
  */
 @Tag("slow")
 class SnapTrialTest {
@@ -33,15 +34,28 @@ class SnapTrialTest {
         // without a slide the scene is symmetric under the half-turn about the cards' long axis
         // that swaps thumb and finger, so the cards stay aligned (α ≈ 0)
         SnapResult still = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0));
-        // opposite slides drag the two cards' tops apart: each card turns about its pinch
-        SnapResult slid = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.04));
+        // opposite slides of 1.5 mm under a 0.2 mm pinch drag the held cards apart: they turn
+        SnapResult slid = trial.run(new SnapParams(0, 0.05, 0.004, 0.05, 0.2, 0.01));
         for (SnapResult r : new SnapResult[] {still, slid}) {
             assertTrue(r.minGap() > 0, "minimum gap " + r.minGap());
             assertEquals(30, r.steps());
+            assertTrue(r.held(), "the pinch keeps both cards: drop " + r.cardDrop() + " m");
             assertEquals(Math.abs(trial.scene().config().alphaTargetDegrees() - r.alphaEnd()), r.objective(), 1e-12);
         }
         assertTrue(still.alphaEnd() < 1, "aligned without a slide: α = " + still.alphaEnd());
-        assertTrue(slid.alphaEnd() > still.alphaEnd() + 2, "slide turns the cards: α = " + slid.alphaEnd());
+        assertTrue(slid.alphaEnd() > 0.5, "the slide turns the cards: α = " + slid.alphaEnd());
+    }
+
+    @Test
+    void aSlideThatLetsTheCardsFallIsNoSnap() {
+        SnapTrial trial = reducedTrial();
+        // 8 mm each way: the thumb and the finger no longer face each other, nothing pinches the
+        // cards and they fall (0.1 s of free fall is 49 mm, ten times the drop limit)
+        SnapResult r = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.0533));
+        assertTrue(r.cardDrop() > 0.02, "the cards fell: drop " + r.cardDrop() + " m");
+        assertTrue(!r.held());
+        assertEquals(trial.scene().config().droppedObjective(), r.objective(), 0.0, "a dropped card scores the largest error");
+        assertTrue(r.minGap() > 0, "minimum gap " + r.minGap());
     }
 
     @Test
