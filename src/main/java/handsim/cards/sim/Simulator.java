@@ -231,7 +231,7 @@ public final class Simulator {
      * lagged friction. Contacts come and go from one Newton iteration to the next, and a new
      * pattern costs a new ordering and symbolic factorisation, so within a step the pattern is
      * kept while it holds every coupling needed and at most {@link #SPARE_PAIRS} (or as many as
-     * the contacts need, if more) pairs no longer needed, which carry zeros; otherwise it becomes
+     * the contacts need, if more) pairs not needed any more, which carry zeros; otherwise it becomes
      * the needed couplings plus the kept ones within that allowance, or just the needed ones. At
      * a step's start ({@code exact}) it is just the needed couplings.
      */

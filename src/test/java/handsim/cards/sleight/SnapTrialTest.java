@@ -49,7 +49,7 @@ class SnapTrialTest {
     @Test
     void aSlideThatLetsTheCardsFallIsNoSnap() {
         SnapTrial trial = reducedTrial();
-        // 8 mm each way: the thumb and the finger no longer face each other, nothing pinches the
+        // 8 mm each way: the thumb and the finger stop facing each other, nothing pinches the
         // cards and they fall (0.1 s of free fall is 49 mm, ten times the drop limit)
         SnapResult r = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.0533));
         assertTrue(r.cardDrop() > 0.02, "the cards fell: drop " + r.cardDrop() + " m");
