@@ -87,6 +87,20 @@ class CommandsTest {
         }
         assertTrue(arrived <= summary.get("throws").asInt(), summary.toString());
         assertEquals(summary.get("loops_completed").asInt(), arrivedSuccesses, summary.toString());
+        // per throw: every throw is a success or fails for one reason, as each CSV row names it; the
+        // learned controller alone is the paper's method
+        JsonNode perThrow = summary.get("per_throw");
+        assertEquals("paper's method", summary.get("method").asText());
+        assertEquals(summary.get("throws").asInt(), perThrow.get("throws").asInt());
+        assertEquals(summary.get("loops_completed").asInt(), perThrow.get("successes").asInt());
+        int failureAt = header.indexOf("failure");
+        for (String reason : java.util.List.of("arrived_end_first", "dropped", "caught_standing", "no_flip")) {
+            long inCsv = rows.subList(2, rows.size()).stream().filter(r -> r.split(",", -1)[failureAt].equals(reason)).count();
+            assertEquals(inCsv, perThrow.get("failures").get(reason).asInt(), reason + ": " + rows);
+        }
+        long failed = rows.subList(2, rows.size()).stream().filter(r -> !r.split(",", -1)[failureAt].isEmpty()).count();
+        assertEquals(perThrow.get("throws").asInt() - perThrow.get("successes").asInt(), failed, rows.toString());
+        assertTrue(text.contains("per throw (paper's method)"), text);
     }
 
     @Test
@@ -103,6 +117,8 @@ class CommandsTest {
         assertEquals(2, summary.get("loops_completed").asInt(), text);
         assertEquals(0, planner.get("mispredicted").asInt(), "each live throw did what it did in the twin world");
         assertTrue(text.contains("planner: 2 throws chosen from"), text);
+        assertEquals("planner-assisted", summary.get("method").asText(), "a planned figure never stands for the paper's method");
+        assertTrue(text.contains("per throw (planner-assisted): 2 of 2 throws succeed"), text);
         assertTrue(Main.run("evaluate", "--task", "height", "--plan") != 0, "the planner plans flip throws only");
         assertTrue(Main.run("evaluate", "--task", "flip", "--object", "can", "--plan", "--copies", "2") != 0, "no planned copies");
     }
