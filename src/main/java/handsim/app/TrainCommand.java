@@ -112,6 +112,11 @@ final class TrainCommand implements Callable<Integer> {
 
     /** The config file with the {@code --set} overrides applied, validated. */
     static TrainConfig load(Path file, List<String> overrides) {
+        return TrainConfig.parse(withOverrides(file, overrides));
+    }
+
+    /** The config file with the {@code --set} overrides (KEY=VALUE, dotted paths into the file) applied. */
+    static Json withOverrides(Path file, List<String> overrides) {
         Map<String, String> kv = new LinkedHashMap<>();
         for (String o : overrides) {
             int eq = o.indexOf('=');
@@ -120,8 +125,7 @@ final class TrainCommand implements Callable<Integer> {
             }
             kv.put(o.substring(0, eq), o.substring(eq + 1));
         }
-        Json j = Json.load(file);
-        return TrainConfig.parse(Json.of(file.toString(), Json.withOverrides(file.toString(), j.node(), kv)));
+        return Json.of(file.toString(), Json.withOverrides(file.toString(), Json.load(file).node(), kv));
     }
 
     /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */

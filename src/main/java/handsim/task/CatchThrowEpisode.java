@@ -1,12 +1,14 @@
 package handsim.task;
 
 import handsim.control.CatchStyle;
+import handsim.control.ControllerConfig;
 import handsim.control.ControllerState;
 import handsim.control.NominalController;
 import handsim.control.Observation;
 import handsim.control.PdController;
 import handsim.control.Phase;
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
 import handsim.kin.Frame;
 import handsim.math.Vec3;
 import handsim.model.HandModel;
@@ -109,6 +111,17 @@ public final class CatchThrowEpisode {
 
     public Simulator sim() {
         return sim;
+    }
+
+    /**
+     * An episode with this one's model, controller settings, object, task and limits on {@code
+     * other} (a simulator with an engine of its own), whose controller throws what {@code
+     * throwPolicy} says: a twin to {@link #restore} this episode's checkpoints into.
+     */
+    public CatchThrowEpisode twinOn(Simulator other, ThrowPolicy throwPolicy) {
+        ControllerConfig cc = controller.config();
+        return new CatchThrowEpisode(other, new PdController(other.model(), cc.pd()),
+                new NominalController(other.model(), cc, controller.object(), throwPolicy, other.config().gravity()), task, limits);
     }
 
     public ThrowTask task() {

@@ -78,6 +78,19 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
     }
 
     /**
+     * Why this policy cannot start a learner on {@code envs} (another task, object, state encoding
+     * or throw box), or null when it can.
+     */
+    public String mismatch(ThrowEnvs envs) {
+        return !task.equals(envs.task()) || !object.equals(envs.object().name())
+                ? "was trained for the " + task + " task with a " + object + ", this run is the " + envs.task()
+                        + " task with a " + envs.object().name()
+                : state != envs.state().encoding() ? "reads the " + state.label() + " state, this run gives the "
+                        + envs.state().encoding().label() + " state (run.state)"
+                : !space.sameBox(envs.space()) ? "throws in " + space + ", this run's task in " + envs.space() : null;
+    }
+
+    /**
      * The policy as the controller's throw policy for {@code task}; fails with a message naming
      * the mismatch if it was trained for another task, object or state.
      */

@@ -125,12 +125,7 @@ public final class TrainRun {
      */
     private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvs envs) {
         ThrowPolicyFile f = ThrowPolicyFile.load(file);
-        String mismatch = !f.task().equals(envs.task()) || !f.object().equals(envs.object().name())
-                ? "was trained for the " + f.task() + " task with a " + f.object() + ", this run is the " + envs.task()
-                        + " task with a " + envs.object().name()
-                : f.state() != envs.state().encoding() ? "reads the " + f.state().label() + " state, this run gives the "
-                        + envs.state().encoding().label() + " state (run.state)"
-                : !f.space().sameBox(envs.space()) ? "throws in " + f.space() + ", this run's task in " + envs.space() : null;
+        String mismatch = f.mismatch(envs);
         if (mismatch != null) {
             throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
         }

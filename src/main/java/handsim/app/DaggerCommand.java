@@ -1,0 +1,83 @@
+package handsim.app;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import handsim.model.HandModel;
+import handsim.rollout.Rollouts;
+import handsim.sim.SimConfig;
+import handsim.train.DaggerRun;
+import handsim.train.DaggerRunConfig;
+import handsim.train.ThrowEnvs;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim dagger}: the learned throw imitates the twin-world teacher by dataset
+ * aggregation (handsim.learn.Dagger), in a run folder, or the continuation of one.
+ */
+@Command(name = "dagger", mixinStandardHelpOptions = true,
+        description = "Train the THROW of a task by DAgger: each round plays episodes with the learner, a teacher that tries "
+                + "throws in a twin world labels every decision with the nearest throw that works (the learner's own when it "
+                + "does), and a fresh actor is fitted to all labels so far. Writes runs/dagger__<name>__<seed>__<time>/ with "
+                + "config.json, run.json, demonstrations.csv, rounds.csv, policies/round-NN.json and policy.json; a run killed "
+                + "at any moment continues with --resume. The teacher is needed for training only: the policy throws alone.")
+final class DaggerCommand implements Callable<Integer> {
+
+    @Option(names = "--config", paramLabel = "FILE", description = "DAgger config, e.g. configs/train/flip-dagger.json")
+    Path config;
+
+    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set dagger.rounds=2 "
+            + "(repeatable; dotted paths into the file)")
+    List<String> overrides = List.of();
+
+    @Option(names = "--resume", paramLabel = "RUN_DIR", description = "continue the run in this folder")
+    Path resume;
+
+    @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
+    Path runs;
+
+    @Option(names = "--init-actor", paramLabel = "POLICY",
+            description = "round 0's learner: a throw policy file of the same task, object and state (default: the task's nominal throw)")
+    Path initActor;
+
+    @Override
+    public Integer call() throws IOException {
+        if ((config == null) == (resume == null)) {
+            throw new IllegalArgumentException("give either --config FILE (a new run) or --resume RUN_DIR");
+        }
+        if (resume != null && (!overrides.isEmpty() || initActor != null)) {
+            throw new IllegalArgumentException("a resumed run keeps the config and the start saved in its folder: --set and "
+                    + "--init-actor go with --config only");
+        }
+        Json file = resume == null ? TrainCommand.withOverrides(config, overrides) : null;
+        DaggerRunConfig c = resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(resume);
+        HandModel model = Runtime.model(null);
+        SimConfig simConfig = Runtime.simConfig();
+        ThrowEnvs envs = TrainCommand.environments(c.run(), model);
+        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
+            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Runtime::twinSimulator)
+                    : DaggerRun.start(RunFolders.next(runs, "dagger", c.run().name(), c.learner().seed()), file, envs, rollouts,
+                            Runtime::twinSimulator, provenance(c), initActor);
+            run.run(System.out);
+        }
+        return 0;
+    }
+
+    /** What a run folder records about how the run was made. */
+    private ObjectNode provenance(DaggerRunConfig c) {
+        ObjectNode p = Json.mapper().createObjectNode();
+        p.put("command", "scripts/handsim dagger --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
+                + (initActor == null ? "" : " --init-actor " + initActor));
+        p.put("seed", c.learner().seed());
+        p.put("commit", Provenance.gitCommit());
+        p.put("started", LocalDateTime.now().toString());
+        p.put("java", System.getProperty("java.version"));
+        p.put("cores", java.lang.Runtime.getRuntime().availableProcessors());
+        return p;
+    }
+}

@@ -1,0 +1,25 @@
+package handsim.learn;
+
+/**
+ * A teacher's answer at one decision, as the learner sees it ({@link TeachableEnv#label}).
+ *
+ * @param action the action to imitate there, in [-1, 1]^k, or null when the teacher found none
+ * @param proposalSucceeded the learner's own action succeeded (and is then the label)
+ * @param tries what it cost: the teacher's trials at this decision
+ * @param robustness how robust a target the label is, in [0, 1]: the share of the teacher's
+ *     trials around it that succeeded too (1 when the teacher does not check, 0 without a label)
+ */
+public record Demonstration(double[] action, boolean proposalSucceeded, int tries, double robustness) {
+
+    public Demonstration {
+        action = action == null ? null : action.clone();
+        if (!(robustness >= 0 && robustness <= 1)) {
+            throw new IllegalArgumentException("robustness must be in [0, 1], got " + robustness);
+        }
+    }
+
+    /** Whether the teacher found an action to imitate. */
+    public boolean labelled() {
+        return action != null;
+    }
+}
