@@ -24,7 +24,9 @@ import java.util.SplittableRandom;
  * robustness check, {@code robustnessTries} throws around the label (a Gaussian of {@code
  * robustnessSpread}) are played too, and the share of them that succeed says how robust a target
  * the label is: a success whose neighbours also succeed is a better thing to imitate than a lucky
- * one.
+ * one. With {@code centre}, the label then moves to the mean of itself and its neighbours that
+ * succeeded, when that mean, played too, succeeds: the nearest success lies on the edge of the
+ * throws that work, and a learner fitted to edges sits on them and fails about half the time.
  */
 public final class ThrowTeacher {
 
@@ -45,8 +47,9 @@ public final class ThrowTeacher {
      * @param rounds the search after a failed proposal, in order; a round begins only when the earlier ones found no success
      * @param robustnessTries throws played around a found label to measure its robustness (0: none)
      * @param robustnessSpread their standard deviation (action units)
+     * @param centre move the label to the mean of its successful neighbours when that succeeds too
      */
-    public record Config(List<Round> rounds, int robustnessTries, double robustnessSpread) {
+    public record Config(List<Round> rounds, int robustnessTries, double robustnessSpread, boolean centre) {
 
         public Config {
             rounds = List.copyOf(rounds);
@@ -59,14 +62,17 @@ public final class ThrowTeacher {
                 throw j.fieldError("rounds", "needs at least one round, got []");
             }
             Config c = new Config(list.stream().map(Round::parse).toList(), j.integer("robustnessTries", 0, 1000),
-                    j.number("robustnessSpread", 0, 2));
+                    j.number("robustnessSpread", 0, 2), j.bool("centre", false));
+            if (c.centre && c.robustnessTries == 0) {
+                throw j.fieldError("centre", "moves the label among the robustness check's throws: set robustnessTries > 0");
+            }
             j.requireNoUnknownFields();
             return c;
         }
 
         /** The most throws one label costs. */
         public int maxTries() {
-            return 1 + rounds.stream().mapToInt(Round::candidates).sum() + robustnessTries;
+            return 1 + rounds.stream().mapToInt(Round::candidates).sum() + robustnessTries + (centre ? 1 : 0);
         }
     }
 
@@ -154,13 +160,30 @@ public final class ThrowTeacher {
         }
         double robustness = label == null ? 0 : 1;
         if (label != null && config.robustnessTries() > 0) {
+            double[] sum = label.clone();
             int held = 0;
             for (int k = 0; k < config.robustnessTries(); k++) {
                 Trial t = play(now, around(label, config.robustnessSpread(), rng));
                 trials.add(t);
-                held += t.success() ? 1 : 0;
+                if (t.success()) {
+                    held++;
+                    for (int i = 0; i < sum.length; i++) {
+                        sum[i] += t.action()[i];
+                    }
+                }
             }
             robustness = (double) held / config.robustnessTries();
+            if (config.centre() && held > 0) {
+                double[] mean = new double[sum.length];
+                for (int i = 0; i < sum.length; i++) {
+                    mean[i] = sum[i] / (held + 1);
+                }
+                Trial t = play(now, mean);
+                trials.add(t);
+                if (t.success()) {
+                    label = mean;
+                }
+            }
         }
         return new Label(label, first.success(), robustness, trials);
     }
