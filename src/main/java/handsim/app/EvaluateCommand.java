@@ -29,6 +29,7 @@ import handsim.task.HeightErrors;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchSensitivity;
 import handsim.task.LoopRecord;
+import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
@@ -356,8 +357,9 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
         ObjectSpec spec = Runtime.object(object);
-        loaded.forTask(Runtime.tasks().create(task, object), spec); // a policy for another task or object fails here
-        return t -> loaded.forTask(t, spec);
+        StateVector.Hand hand = StateVector.Hand.of(Runtime.model(null));
+        loaded.forTask(Runtime.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        return t -> loaded.forTask(t, spec, hand);
     }
 
     /** A worker's evaluation: its own task (goals are per-episode state) and throw policy. */

@@ -158,7 +158,8 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.load(file).forTask(task, Runtime.object(setup.object()));
+            return ThrowPolicyFile.load(file).forTask(task, Runtime.object(setup.object()),
+                    handsim.task.StateVector.Hand.of(Runtime.model(null)));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

@@ -137,7 +137,7 @@ final class TrainCommand implements Callable<Integer> {
         return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
                 Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
-                new StateVector(run.state(), object.longAxis()));
+                new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
     }
 
     private Path runFolder(TrainConfig c) {

@@ -95,11 +95,19 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * the mismatch if it was trained for another task, object or state.
      */
     public LearnedThrowPolicy forTask(ThrowTask task, ObjectSpec object) {
+        return forTask(task, object, null);
+    }
+
+    /**
+     * {@link #forTask(ThrowTask, ObjectSpec)} in a hand of the given sizes (needed by a policy
+     * that reads the extended state, {@link StateVector.Encoding#handSized}; else may be null).
+     */
+    public LearnedThrowPolicy forTask(ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
         if (!this.task.equals(task.name()) || !this.object.equals(object.name())) {
             throw new IllegalArgumentException("this policy was trained for the " + this.task + " task with a " + this.object
                     + ", not the " + task.name() + " task with a " + object.name());
         }
-        StateVector encoder = new StateVector(state, object.longAxis());
+        StateVector encoder = new StateVector(state, object.longAxis(), hand);
         int size = encoder.size(task.goalSize());
         if (policy.observationSize() != size) {
             throw new IllegalArgumentException("this policy reads " + policy.observationSize() + " state entries, the "
