@@ -1,5 +1,7 @@
 package handsim.learn;
 
+import java.util.List;
+
 /**
  * A teacher's answer at one decision, as the learner sees it ({@link TeachableEnv#label}).
  *
@@ -8,14 +10,30 @@ package handsim.learn;
  * @param tries what it cost: the teacher's trials at this decision
  * @param robustness how robust a target the label is, in [0, 1]: the share of the teacher's
  *     trials around it that succeeded too (1 when the teacher does not check, 0 without a label)
+ * @param trials the teacher's trials in order, when it tells them (else empty): every action it
+ *     tried at this decision and how it came out, failures included
  */
-public record Demonstration(double[] action, boolean proposalSucceeded, int tries, double robustness) {
+public record Demonstration(double[] action, boolean proposalSucceeded, int tries, double robustness, List<Trial> trials) {
+
+    /** One action the teacher tried: whether it succeeded, and the task's reward for it. */
+    public record Trial(double[] action, boolean success, double reward) {
+
+        public Trial {
+            action = action.clone();
+        }
+    }
 
     public Demonstration {
         action = action == null ? null : action.clone();
+        trials = List.copyOf(trials);
         if (!(robustness >= 0 && robustness <= 1)) {
             throw new IllegalArgumentException("robustness must be in [0, 1], got " + robustness);
         }
+    }
+
+    /** A demonstration without its trials. */
+    public Demonstration(double[] action, boolean proposalSucceeded, int tries, double robustness) {
+        this(action, proposalSucceeded, tries, robustness, List.of());
     }
 
     /** Whether the teacher found an action to imitate. */

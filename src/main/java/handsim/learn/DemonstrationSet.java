@@ -19,6 +19,9 @@ import java.util.Map;
  * decisions, so that a cut-short episode shows), {@code proposal_succeeded, tries, robustness, labelled}, the
  * observation {@code obs_i}, the learner's proposal {@code proposal_j} and the teacher's label
  * {@code label_j} (empty when it found none). Numbers are written exactly ({@link Double#toString}).
+ * The teacher's trials, when it tells them, go beside it ({@link #trialsFile}): one row per
+ * trial, {@code round, episode, decision, trial, success, reward, action_j}, written just after
+ * their episode's rows (a kill between the two loses the trials of that episode only).
  */
 public final class DemonstrationSet {
 
@@ -34,6 +37,11 @@ public final class DemonstrationSet {
 
     public Path file() {
         return file;
+    }
+
+    /** Where the teacher's trials go: {@code NAME-trials.csv} beside {@code NAME.csv}. */
+    public Path trialsFile() {
+        return file.resolveSibling(file.getFileName().toString().replaceFirst("\\.csv$", "") + "-trials.csv");
     }
 
     /** Appends a finished episode's decisions (the header first when the file is new) and flushes them to disk. */
@@ -63,9 +71,37 @@ public final class DemonstrationSet {
             }
             sb.append('\n');
         }
-        try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
+        StringBuilder trials = new StringBuilder();
+        if (!Files.exists(trialsFile()) || Files.size(trialsFile()) == 0) {
+            trials.append("round,episode,decision,trial,success,reward");
+            for (int j = 0; j < actionSize; j++) {
+                trials.append(",action_").append(j);
+            }
+            trials.append('\n');
+        }
+        int written = 0;
+        for (int decision = 0; decision < e.visits().size(); decision++) {
+            List<Demonstration.Trial> ts = e.visits().get(decision).label().trials();
+            for (int t = 0; t < ts.size(); t++) {
+                trials.append(e.request().round()).append(',').append(e.request().episode()).append(',').append(decision).append(',')
+                        .append(t).append(',').append(ts.get(t).success()).append(',').append(ts.get(t).reward());
+                for (double x : ts.get(t).action()) {
+                    trials.append(',').append(x);
+                }
+                trials.append('\n');
+                written++;
+            }
+        }
+        write(file, sb);
+        if (written > 0) {
+            write(trialsFile(), trials);
+        }
+    }
+
+    private static void write(Path to, CharSequence text) throws IOException {
+        try (BufferedWriter w = Files.newBufferedWriter(to, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
                 StandardOpenOption.APPEND)) {
-            w.write(sb.toString());
+            w.append(text);
         }
     }
 

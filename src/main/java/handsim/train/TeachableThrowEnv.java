@@ -42,6 +42,7 @@ public final class TeachableThrowEnv implements TeachableEnv {
     @Override
     public Demonstration label(double[] proposal, long seed) {
         ThrowTeacher.Label l = teacher.label(env.episode(), proposal, seed);
-        return new Demonstration(l.action(), l.proposalSucceeded(), l.tries(), l.robustness());
+        return new Demonstration(l.action(), l.proposalSucceeded(), l.tries(), l.robustness(),
+                l.trials().stream().map(t -> new Demonstration.Trial(t.action(), t.success(), t.reward())).toList());
     }
 }
