@@ -23,14 +23,18 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * {@code handsim demo}, the main job: endless catch-and-throw of a sphere to varying heights.
- * With a display it opens the viewer; without one it runs a fixed number of throws headless,
- * prints each, and writes a run folder with a summary and a plot of apex against goal.
+ * {@code handsim demo}, the main job: endless catch-and-throw of a sphere to varying heights, or,
+ * with an object the flip task takes ({@code --object can}, {@code club}), flipping it and
+ * catching it over and over with the shipped flip policy ({@link FlipDemo}). With a display it
+ * opens the viewer; without one it runs a fixed number of throws headless, prints each, and writes
+ * a run folder with a summary and a plot.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "The main job: the hand catches and throws a sphere to a new random height every loop. "
+        description = "The main job: the hand catches and throws a sphere to a new random height every loop; with --object can "
+                + "or club it flips the object and catches it lying in the hand, over and over, with the shipped flip policy "
+                + "(models/policies/flip-<object>.json, the learned controller alone). "
                 + "Opens the viewer when there is a display (Esc quits); otherwise (or with --headless) runs --loops throws "
-                + "headless and writes summary.json, loops.csv and apex.png to a run folder.")
+                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder.")
 final class DemoCommand implements Callable<Integer> {
 
     @Option(names = "--loops", defaultValue = "20", description = "throws to make when headless (default: ${DEFAULT-VALUE})")
@@ -73,11 +77,27 @@ final class DemoCommand implements Callable<Integer> {
         if (loops < 1 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [1, 100000], got " + loops);
         }
-        HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
-        String controller = bestController(object);
         if (export != null && !headless && ViewerSession.hasDisplay()) {
             throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
         }
+        if (FlipDemo.flips(object)) {
+            if (heights != null) {
+                throw new IllegalArgumentException("--heights goes with the height demo (a sphere or cuboid), not with a " + object
+                        + ", which the demo flips");
+            }
+            String flipController = FlipDemo.shippedPolicy(object) != null ? "learned" : "nominal";
+            if (!headless && ViewerSession.hasDisplay()) {
+                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null, null, false, 0, null);
+            }
+            if (!headless) {
+                System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
+            }
+            RunExport flipExport = RunExport.to(export);
+            new FlipDemo(object, seed, loops).run(out != null ? out : RunFolders.next(null, "demo", object, seed), flipExport);
+            return 0;
+        }
+        HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
+        String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
             return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, false, 0, null);

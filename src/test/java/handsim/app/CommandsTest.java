@@ -37,6 +37,26 @@ class CommandsTest {
     }
 
     @Test
+    void demoHeadlessFlipsACanWithTheShippedFlipPolicyAndSaysHowEachThrowEnded(@TempDir Path dir) throws Exception {
+        String text = runPrinting("demo", "--headless", "--object", "can", "--loops", "2", "--seed", "1", "--out", dir.toString());
+        assertTrue(text.contains("flip task, can, the learned controller (models/policies/flip-can.json, alone)"), text);
+        assertTrue(text.contains("throw   1/2: turned") && text.contains("throw   2/2: turned"), text);
+        JsonNode summary = Json.load(dir.resolve("summary.json")).node();
+        assertEquals("flip", summary.get("task").asText());
+        assertEquals(2, summary.get("throws").asInt());
+        int failed = 0;
+        for (JsonNode f : summary.get("failures")) {
+            failed += f.asInt();
+        }
+        assertEquals(2, summary.get("successes").asInt() + failed, "each throw a success or a failure for one reason");
+        java.util.List<String> rows = Files.readAllLines(dir.resolve("loops.csv"));
+        assertEquals(3, rows.size(), "a header and one row per throw");
+        assertDrawn(dir.resolve("rotation.png"));
+        assertEquals(2, Main.run("demo", "--headless", "--object", "club", "--heights", "1:1.2", "--out", dir.resolve("x").toString()),
+                "a flipped object has no height goals");
+    }
+
+    @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
                 "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());
