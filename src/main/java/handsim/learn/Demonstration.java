@@ -15,11 +15,15 @@ import java.util.List;
  */
 public record Demonstration(double[] action, boolean proposalSucceeded, int tries, double robustness, List<Trial> trials) {
 
-    /** One action the teacher tried: whether it succeeded, and the task's reward for it. */
-    public record Trial(double[] action, boolean success, double reward) {
+    /**
+     * One action the teacher tried: whether it succeeded, the task's reward for it, and the task's
+     * measures of how it came out ({@code outcome}, named by the environment; NaN where unmeasured).
+     */
+    public record Trial(double[] action, boolean success, double reward, double[] outcome) {
 
         public Trial {
             action = action.clone();
+            outcome = outcome.clone();
         }
     }
 

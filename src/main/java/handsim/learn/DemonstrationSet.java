@@ -20,7 +20,8 @@ import java.util.Map;
  * observation {@code obs_i}, the learner's proposal {@code proposal_j} and the teacher's label
  * {@code label_j} (empty when it found none). Numbers are written exactly ({@link Double#toString}).
  * The teacher's trials, when it tells them, go beside it ({@link #trialsFile}): one row per
- * trial, {@code round, episode, decision, trial, success, reward, action_j}, written just after
+ * trial, {@code round, episode, decision, trial, success, reward, action_j} and the outcome measures
+ * the set was made with, written just after
  * their episode's rows (a kill between the two loses the trials of that episode only).
  */
 public final class DemonstrationSet {
@@ -28,11 +29,19 @@ public final class DemonstrationSet {
     private final Path file;
     private final int observationSize;
     private final int actionSize;
+    private final List<String> outcomeNames;
 
+    /** A set without trial outcomes. */
     public DemonstrationSet(Path file, int observationSize, int actionSize) {
+        this(file, observationSize, actionSize, List.of());
+    }
+
+    /** A set whose trials carry the outcome measures {@code outcomeNames} (columns of the trials file, in order). */
+    public DemonstrationSet(Path file, int observationSize, int actionSize, List<String> outcomeNames) {
         this.file = file;
         this.observationSize = observationSize;
         this.actionSize = actionSize;
+        this.outcomeNames = List.copyOf(outcomeNames);
     }
 
     public Path file() {
@@ -77,6 +86,7 @@ public final class DemonstrationSet {
             for (int j = 0; j < actionSize; j++) {
                 trials.append(",action_").append(j);
             }
+            outcomeNames.forEach(name -> trials.append(',').append(name));
             trials.append('\n');
         }
         int written = 0;
@@ -86,6 +96,13 @@ public final class DemonstrationSet {
                 trials.append(e.request().round()).append(',').append(e.request().episode()).append(',').append(decision).append(',')
                         .append(t).append(',').append(ts.get(t).success()).append(',').append(ts.get(t).reward());
                 for (double x : ts.get(t).action()) {
+                    trials.append(',').append(x);
+                }
+                if (ts.get(t).outcome().length != outcomeNames.size()) {
+                    throw new IllegalArgumentException("a trial has " + ts.get(t).outcome().length + " outcome measures, the set names "
+                            + outcomeNames);
+                }
+                for (double x : ts.get(t).outcome()) {
                     trials.append(',').append(x);
                 }
                 trials.append('\n');

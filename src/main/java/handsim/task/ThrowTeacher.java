@@ -76,8 +76,11 @@ public final class ThrowTeacher {
         }
     }
 
-    /** One throw played in the twin: the action (units of the box, [-1, 1] per entry), whether the task counted it a success, and its reward. */
-    public record Trial(double[] action, boolean success, double reward) {
+    /**
+     * One throw played in the twin: the action (units of the box, [-1, 1] per entry), whether the
+     * task counted it a success, its reward, and the loop it made (null when the simulation diverged).
+     */
+    public record Trial(double[] action, boolean success, double reward, LoopRecord loop) {
     }
 
     /**
@@ -197,13 +200,13 @@ public final class ThrowTeacher {
             twinEpisode.resume();
             next = twinEpisode.runUntilThrowDue();
         } catch (SimulationDiverged e) {
-            return new Trial(action, false, Double.NEGATIVE_INFINITY);
+            return new Trial(action, false, Double.NEGATIVE_INFINITY, null);
         }
         if (twinEpisode.loops().size() <= from.loopCount()) {
-            return new Trial(action, false, Double.NEGATIVE_INFINITY);
+            return new Trial(action, false, Double.NEGATIVE_INFINITY, null);
         }
         LoopRecord made = twinEpisode.loops().get(from.loopCount());
-        return new Trial(action, next != null && task.success(made), task.reward(made));
+        return new Trial(action, next != null && task.success(made), task.reward(made), made);
     }
 
     private static double[] around(double[] centre, double spread, SplittableRandom rng) {

@@ -119,7 +119,7 @@ public final class DaggerRun {
     public void run(PrintStream out) throws IOException {
         int n = envs.observationSize(), k = ThrowParameters.SIZE;
         Dagger dagger = new Dagger(config.learner(), n, k);
-        DemonstrationSet set = new DemonstrationSet(dir.resolve(DEMONSTRATIONS), n, k);
+        DemonstrationSet set = new DemonstrationSet(dir.resolve(DEMONSTRATIONS), n, k, TeachableThrowEnv.OUTCOMES);
         Map<Integer, Map<Integer, List<Dagger.Visit>>> journal = set.read();
         int finished = finishedRounds();
         List<Dagger.Visit> earlier = new ArrayList<>();

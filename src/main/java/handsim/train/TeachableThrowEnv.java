@@ -43,6 +43,18 @@ public final class TeachableThrowEnv implements TeachableEnv {
     public Demonstration label(double[] proposal, long seed) {
         ThrowTeacher.Label l = teacher.label(env.episode(), proposal, seed);
         return new Demonstration(l.action(), l.proposalSucceeded(), l.tries(), l.robustness(),
-                l.trials().stream().map(t -> new Demonstration.Trial(t.action(), t.success(), t.reward())).toList());
+                l.trials().stream().map(t -> new Demonstration.Trial(t.action(), t.success(), t.reward(), outcome(t.loop()))).toList());
+    }
+
+    /** What each trial's outcome records ({@link #outcome}): the loop's flight, in radians and rad/s. */
+    public static final java.util.List<String> OUTCOMES = java.util.List.of("flight_rotation_rad", "release_spin_rad_s",
+            "arrival_tilt_rad", "catch_tilt_rad", "caught");
+
+    /** A trial's loop as numbers ({@link #OUTCOMES}; NaN throughout when the simulation diverged). */
+    static double[] outcome(handsim.task.LoopRecord loop) {
+        if (loop == null) {
+            return new double[] {Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN};
+        }
+        return new double[] {loop.flightRotation(), loop.releaseSpin(), loop.arrivalTilt(), loop.catchTilt(), loop.caught() ? 1 : 0};
     }
 }

@@ -46,12 +46,13 @@ class DemonstrationSetTest {
         assertEquals(1, read.get(1).get(0).size());
         // no teacher told its trials: no trials file
         assertTrue(Files.notExists(set.trialsFile()));
-        List<Demonstration.Trial> trials = List.of(new Demonstration.Trial(new double[] {0.5, -0.5}, false, -0.02),
-                new Demonstration.Trial(new double[] {0.25, 0.125}, true, 1.5));
+        List<Demonstration.Trial> trials = List.of(new Demonstration.Trial(new double[] {0.5, -0.5}, false, -0.02, new double[] {1.5}),
+                new Demonstration.Trial(new double[] {0.25, 0.125}, true, 1.5, new double[] {Double.NaN}));
+        set = new DemonstrationSet(dir.resolve("d.csv"), 3, 2, List.of("turn"));
         set.append(new Dagger.Episode(new Dagger.Request(2, 0, 1, 2, 10, true), List.of(new Dagger.Visit(new double[3], new double[2],
                 new Demonstration(new double[] {0.25, 0.125}, false, 2, 1, trials)))));
-        assertEquals(List.of("round,episode,decision,trial,success,reward,action_0,action_1", "2,0,0,0,false,-0.02,0.5,-0.5",
-                "2,0,0,1,true,1.5,0.25,0.125"), Files.readAllLines(dir.resolve("d-trials.csv")), "one row per trial, in order");
+        assertEquals(List.of("round,episode,decision,trial,success,reward,action_0,action_1,turn", "2,0,0,0,false,-0.02,0.5,-0.5,1.5",
+                "2,0,0,1,true,1.5,0.25,0.125,NaN"), Files.readAllLines(dir.resolve("d-trials.csv")), "one row per trial, in order");
     }
 
     @Test
