@@ -57,6 +57,33 @@ class CommandsTest {
     }
 
     @Test
+    void daggerWritesItsRoundsAndPoliciesAndAResumedRunPlaysNothingTwice(@TempDir Path dir) throws Exception {
+        String text = runPrinting("dagger", "--config", "configs/train/flip-dagger.json", "--runs", dir.toString(), "--set",
+                "dagger.rounds=1", "--set", "dagger.episodesPerRound=1", "--set", "dagger.maxDecisionsPerEpisode=2", "--set",
+                "run.workers=1", "--set", "pretrain.epochs=2");
+        assertTrue(text.contains("round 0: the learner's own throw succeeded at"), text);
+        Path run;
+        try (var list = Files.list(dir)) {
+            run = list.filter(p -> p.getFileName().toString().startsWith("dagger__flip-dagger__1__")).findFirst().orElseThrow();
+        }
+        java.util.List<String> rounds = Files.readAllLines(run.resolve("rounds.csv"));
+        assertEquals(2, rounds.size(), "a header and round 0: " + rounds);
+        assertEquals("0,1,2,", rounds.get(1).substring(0, 6), "round 0: one episode of two decisions (labels executed)");
+        java.util.List<String> decisions = Files.readAllLines(run.resolve("demonstrations.csv"));
+        assertEquals(3, decisions.size(), "a header and the two decisions");
+        assertTrue(Files.readAllLines(run.resolve("demonstrations-trials.csv")).size() >= 2, "the teacher's trials");
+        handsim.train.ThrowPolicyFile policy = handsim.train.ThrowPolicyFile.load(run.resolve("policies/round-00.json"));
+        assertEquals("flip", policy.task());
+        assertEquals(handsim.task.StateVector.Encoding.CONTINUOUS, policy.state());
+        String again = runPrinting("dagger", "--resume", run.toString());
+        assertTrue(again.contains("rounds 1..0 of 1"), "nothing left to play: " + again);
+        assertEquals(decisions, Files.readAllLines(run.resolve("demonstrations.csv")), "nothing played twice");
+        assertEquals(2, Main.run("dagger", "--resume", run.toString(), "--set", "dagger.rounds=2"), "a resumed run keeps its config");
+        assertEquals(2, Main.run("dagger", "--config", "configs/train/flip-dagger.json", "--set", "dagger.weighting=loud", "--runs",
+                dir.toString()), "a bad field is refused");
+    }
+
+    @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
                 "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());
