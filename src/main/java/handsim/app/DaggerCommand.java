@@ -10,7 +10,6 @@ import handsim.train.DaggerRunConfig;
 import handsim.train.ThrowEnvs;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.time.LocalDateTime;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -70,14 +69,6 @@ final class DaggerCommand implements Callable<Integer> {
 
     /** What a run folder records about how the run was made. */
     private ObjectNode provenance(DaggerRunConfig c) {
-        ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim dagger --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
-                + (initActor == null ? "" : " --init-actor " + initActor));
-        p.put("seed", c.learner().seed());
-        p.put("commit", Provenance.gitCommit());
-        p.put("started", LocalDateTime.now().toString());
-        p.put("java", System.getProperty("java.version"));
-        p.put("cores", java.lang.Runtime.getRuntime().availableProcessors());
-        return p;
+        return TrainCommand.provenance("dagger", config, overrides, initActor, c.learner().seed());
     }
 }

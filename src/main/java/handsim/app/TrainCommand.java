@@ -155,10 +155,16 @@ final class TrainCommand implements Callable<Integer> {
 
     /** What a run folder records about how the run was made. */
     private ObjectNode provenance(TrainConfig c) {
+        return provenance("train", config, overrides, initActor, c.learner().seed());
+    }
+
+    /** What a run folder of {@code command} records about how the run was made: the command line, seed, commit, time, Java and cores. */
+    static ObjectNode provenance(String command, Path config, List<String> overrides, Path initActor, long seed) {
         ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim train --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
+        p.put("command", "scripts/handsim " + command + " --config " + config
+                + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
                 + (initActor == null ? "" : " --init-actor " + initActor));
-        p.put("seed", c.learner().seed());
+        p.put("seed", seed);
         p.put("commit", Provenance.gitCommit());
         p.put("started", LocalDateTime.now().toString());
         p.put("java", System.getProperty("java.version"));
