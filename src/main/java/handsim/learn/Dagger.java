@@ -135,9 +135,10 @@ public final class Dagger {
 
     /**
      * Round {@code round}: its episodes played by {@code player} with {@code actor}, their labels
-     * added to {@code earlier} (the visits of the rounds before), and a fresh actor fitted to them all.
+     * added to {@code earlier} (the visits of the rounds before), and an actor fitted to them all
+     * ({@link #fit}; {@code network}: the actor when it is a network, else null).
      */
-    public Round round(int round, Function<double[], double[]> actor, EpisodePlayer player, List<Visit> earlier) {
+    public Round round(int round, Function<double[], double[]> actor, Policy network, EpisodePlayer player, List<Visit> earlier) {
         List<Episode> episodes = player.play(actor, requests(round));
         List<Visit> all = new ArrayList<>(earlier);
         int decisions = 0, proposalSuccesses = 0, labelled = 0;
@@ -151,7 +152,7 @@ public final class Dagger {
                 all.add(v);
             }
         }
-        Fit fit = fit(all, fitSeed(round), "DAgger round " + round);
+        Fit fit = fit(all, fitSeed(round), "DAgger round " + round, network);
         return new Round(episodes, new RoundStats(round, episodes.size(), decisions, proposalSuccesses, labelled, tries,
                 fit.examples(), fit.trainLoss(), fit.validationLoss()), fit.policy());
     }
@@ -161,11 +162,12 @@ public final class Dagger {
     }
 
     /**
-     * A fresh actor ({@link DaggerConfig#network}, seeded by {@code seed}) fitted to the labels of
-     * {@code visits} that the teacher found and that are robust enough ({@link
+     * An actor ({@link DaggerConfig#network}, seeded by {@code seed}; with {@link
+     * DaggerConfig.Refit#CONTINUE} starting as {@code start} when that is not null) fitted to the
+     * labels of {@code visits} that the teacher found and that are robust enough ({@link
      * DaggerConfig#minRobustness}), weighted as the config says.
      */
-    public Fit fit(List<Visit> visits, long seed, String note) {
+    public Fit fit(List<Visit> visits, long seed, String note, Policy start) {
         List<Visit> kept = visits.stream().filter(v -> v.label().labelled() && v.label().robustness() >= config.minRobustness())
                 .toList();
         if (kept.size() < 2) {
@@ -181,6 +183,9 @@ public final class Dagger {
         }
         Rng seeds = new Rng(seed);
         DdpgAgent agent = DdpgAgent.create(config.network(), observationSize, actionSize, seeds.nextLong());
+        if (start != null && config.refit() == DaggerConfig.Refit.CONTINUE) {
+            agent.startActorFrom(start, config.fit().policyObservations());
+        }
         ActorPretraining.Result r = ActorPretraining.fit(agent, obs, actions, weights, config.fit(), seeds.nextLong());
         int last = r.trainLoss().length - 1;
         return new Fit(agent.policy(note, "[-1, 1]^" + actionSize), kept.size(), r.trainLoss()[last], r.validationLoss()[last]);

@@ -21,13 +21,26 @@ import java.util.Locale;
  * @param weighting {@link Weighting#UNIFORM}, or {@link Weighting#ROBUSTNESS}: each example
  *     weighs its label's robustness
  * @param minRobustness labels less robust than this are left out of the fit
+ * @param refit {@link Refit#FRESH}: each round fits a fresh actor; {@link Refit#CONTINUE}: the
+ *     round's fit starts from the actor that played it (when it is a network), its normaliser's
+ *     statistics counting as {@code pretrain.policyObservations} observations, so that a fit does
+ *     not lose the precision of the actor it improves on where the labels agree with it
  * @param network the actor's layers and input normalisation ({@code ddpg} section, so that DDPG can
  *     fine-tune the result; its other fields are unused here)
  * @param fit the regression of each round ({@code pretrain} section: epochs, batch size, learning
  *     rate, held-out share)
  */
 public record DaggerConfig(long seed, int rounds, int episodesPerRound, int maxDecisionsPerEpisode, boolean executeLabel,
-        Weighting weighting, double minRobustness, TrainingConfig.Ddpg network, TrainingConfig.Pretrain fit) {
+        Weighting weighting, double minRobustness, Refit refit, TrainingConfig.Ddpg network, TrainingConfig.Pretrain fit) {
+
+    /** Where each round's fit starts. */
+    public enum Refit {
+        FRESH, CONTINUE;
+
+        String label() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
 
     /** How each example weighs in the fit. */
     public enum Weighting {
@@ -56,9 +69,18 @@ public record DaggerConfig(long seed, int rounds, int episodesPerRound, int maxD
     public static DaggerConfig parse(Json j) {
         Json d = j.get("dagger");
         d.allow("comment");
+        String refit = d.string("refit", Refit.FRESH.label());
+        if (!refit.equals(Refit.FRESH.label()) && !refit.equals(Refit.CONTINUE.label())) {
+            throw d.fieldError("refit", "must be fresh or continue, got \"" + refit + "\"");
+        }
         DaggerConfig c = new DaggerConfig(j.longValue("seed"), d.integer("rounds", 1, 1000), d.integer("episodesPerRound", 1, 1_000_000),
                 d.integer("maxDecisionsPerEpisode", 1, 100_000), d.bool("executeLabel", true), Weighting.parse(d, "weighting"),
-                d.number("minRobustness", 0, 1), TrainingConfig.Ddpg.parse(j.get("ddpg")), TrainingConfig.Pretrain.parse(j.get("pretrain")));
+                d.number("minRobustness", 0, 1), refit.equals(Refit.CONTINUE.label()) ? Refit.CONTINUE : Refit.FRESH,
+                TrainingConfig.Ddpg.parse(j.get("ddpg")), TrainingConfig.Pretrain.parse(j.get("pretrain")));
+        if (c.refit == Refit.CONTINUE && c.fit.policyObservations() == 0) {
+            throw d.fieldError("refit", "continue needs pretrain.policyObservations, how many observations the actor's "
+                    + "normaliser statistics count as");
+        }
         d.requireNoUnknownFields();
         return c;
     }

@@ -126,7 +126,8 @@ public final class DaggerRun {
         for (int r = 0; r < finished; r++) {
             journal.getOrDefault(r, Map.of()).values().forEach(earlier::addAll);
         }
-        Function<double[], double[]> actor = finished == 0 ? initialActor() : roundPolicy(finished - 1)::act;
+        Policy network = finished == 0 ? initialPolicy() : roundPolicy(finished - 1);
+        Function<double[], double[]> actor = network != null ? network::act : nominalActor();
         Map<Simulator, TeachableThrowEnv> workers = Collections.synchronizedMap(new IdentityHashMap<>());
         List<Simulator> twinSims = Collections.synchronizedList(new ArrayList<>());
         out.printf(Locale.ROOT, "DAgger %s (%s task, %s) in %s: rounds %d..%d of %d, %d episodes each on %d workers%n",
@@ -137,7 +138,7 @@ public final class DaggerRun {
                 long t0 = System.nanoTime();
                 Map<Integer, List<Dagger.Visit>> kept = journal.getOrDefault(r, Map.of());
                 Progress progress = new Progress(out, r, config.learner().episodesPerRound(), config.run().progressSeconds());
-                Dagger.Round round = dagger.round(r, actor, (a, requests) -> rollouts.run(requests.size(), sim -> {
+                Dagger.Round round = dagger.round(r, actor, network, (a, requests) -> rollouts.run(requests.size(), sim -> {
                     TeachableThrowEnv env = workers.computeIfAbsent(sim, s -> {
                         Simulator twin = twins.apply(s);
                         twinSims.add(twin);
@@ -167,7 +168,8 @@ public final class DaggerRun {
                         + "labelled %d with %d tries (%.1f per decision); the actor fitted to %d labels (loss %.4f, held out %.4f); "
                         + "%.0f s%n", r, s.proposalSuccesses(), s.decisions(), 100 * s.proposalSuccessRate(), s.labelled(), s.tries(),
                         (double) s.tries() / Math.max(1, s.decisions()), s.examples(), s.trainLoss(), s.validationLoss(), seconds);
-                actor = round.policy()::act;
+                network = round.policy();
+                actor = network::act;
             }
         } finally {
             twinSims.forEach(Simulator::close);
@@ -175,12 +177,14 @@ public final class DaggerRun {
         out.println("wrote " + dir.resolve(POLICY) + ", " + ROUNDS + ", " + DEMONSTRATIONS);
     }
 
-    /** Round 0's learner: the run's initial policy, or the task's nominal throw from every state. */
-    private Function<double[], double[]> initialActor() {
+    /** Round 0's learner when the run started from a policy, else null (the nominal throw). */
+    private Policy initialPolicy() {
         Path init = dir.resolve(INIT_POLICY);
-        if (Files.isRegularFile(init)) {
-            return checkedPolicy(ThrowPolicyFile.load(init), init, envs)::act;
-        }
+        return Files.isRegularFile(init) ? checkedPolicy(ThrowPolicyFile.load(init), init, envs) : null;
+    }
+
+    /** The task's nominal throw from every state. */
+    private Function<double[], double[]> nominalActor() {
         double[] nominal = envs.space().toAction(envs.tasks().get().nominalThrow());
         return obs -> nominal.clone();
     }

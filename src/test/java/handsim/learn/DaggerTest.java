@@ -72,7 +72,7 @@ class DaggerTest {
     private static DaggerConfig config(int rounds, boolean executeLabel) {
         TrainingConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "40", "pretrain.batchSize", "32",
                 "pretrain.validationFraction", "0.1");
-        return new DaggerConfig(7, rounds, 20, 10, executeLabel, DaggerConfig.Weighting.UNIFORM, 0, t.ddpg(), t.pretrain());
+        return new DaggerConfig(7, rounds, 20, 10, executeLabel, DaggerConfig.Weighting.UNIFORM, 0, DaggerConfig.Refit.FRESH, t.ddpg(), t.pretrain());
     }
 
     /** Plays the requests one after another on one environment. */
@@ -88,7 +88,7 @@ class DaggerTest {
         List<Dagger.Visit> all = new ArrayList<>();
         List<Double> success = new ArrayList<>();
         for (int r = 0; r < 3; r++) {
-            Dagger.Round round = dagger.round(r, actor, on(env), all);
+            Dagger.Round round = dagger.round(r, actor, null, on(env), all);
             round.episodes().forEach(e -> all.addAll(e.visits()));
             success.add(round.stats().proposalSuccessRate());
             assertEquals(all.size(), round.stats().examples(), "every label so far is fitted (all found, none filtered)");
@@ -103,7 +103,7 @@ class DaggerTest {
     @Test
     void withoutExecutingTheLabelAnEpisodeEndsAtTheLearnersFirstFailure() {
         Dagger dagger = new Dagger(config(1, false), 2, 1);
-        Dagger.Round round = dagger.round(0, s -> new double[] {0}, on(new Window()), List.of());
+        Dagger.Round round = dagger.round(0, s -> new double[] {0}, null, on(new Window()), List.of());
         for (Dagger.Episode e : round.episodes()) {
             List<Dagger.Visit> v = e.visits();
             for (int d = 0; d < v.size() - 1; d++) {
@@ -116,8 +116,8 @@ class DaggerTest {
     @Test
     void aRoundIsAFunctionOfTheRootSeedAndTheRoundAlone() {
         Dagger dagger = new Dagger(config(2, true), 2, 1);
-        Dagger.Round a = dagger.round(1, s -> new double[] {0.2}, on(new Window()), List.of());
-        Dagger.Round b = dagger.round(1, s -> new double[] {0.2}, on(new Window()), List.of());
+        Dagger.Round a = dagger.round(1, s -> new double[] {0.2}, null, on(new Window()), List.of());
+        Dagger.Round b = dagger.round(1, s -> new double[] {0.2}, null, on(new Window()), List.of());
         assertEquals(a.stats(), b.stats());
         assertArrayEquals(a.policy().act(new double[] {0.3, -0.4}), b.policy().act(new double[] {0.3, -0.4}), 0);
         assertTrue(dagger.requests(0).get(0).envSeed() != dagger.requests(1).get(0).envSeed(), "rounds play other episodes");
@@ -126,16 +126,50 @@ class DaggerTest {
     @Test
     void labelsLessRobustThanTheFloorAreLeftOutAndRobustOnesWeighMore() {
         TrainingConfig t = LearnTestSupport.config("pretrain.epochs", "5");
-        DaggerConfig c = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.ROBUSTNESS, 0.5, t.ddpg(), t.pretrain());
+        DaggerConfig c = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.ROBUSTNESS, 0.5, DaggerConfig.Refit.FRESH, t.ddpg(), t.pretrain());
         List<Dagger.Visit> visits = new ArrayList<>();
         for (int i = 0; i < 10; i++) {
             visits.add(new Dagger.Visit(new double[] {i, 0}, new double[] {0}, new Demonstration(new double[] {0.1}, false, 3, i / 10.0)));
         }
         visits.add(new Dagger.Visit(new double[] {1, 1}, new double[] {0}, new Demonstration(null, false, 49, 0)));
-        assertEquals(5, new Dagger(c, 2, 1).fit(visits, 3, "test").examples(), "robustness 0.5-0.9 kept; none without a label");
+        assertEquals(5, new Dagger(c, 2, 1).fit(visits, 3, "test", null).examples(), "robustness 0.5-0.9 kept; none without a label");
         IllegalStateException e = assertThrows(IllegalStateException.class,
-                () -> new Dagger(c, 2, 1).fit(visits.subList(0, 5), 3, "test"));
+                () -> new Dagger(c, 2, 1).fit(visits.subList(0, 5), 3, "test", null));
         assertTrue(e.getMessage().contains("0 usable labels"), e.getMessage());
+    }
+
+    @Test
+    void aContinuedFitKeepsTheActorItStartsFromWhereTheLabelsAgreeWithIt() {
+        // labels that are the start actor's own actions: a continued fit stays near it, a fresh fit of
+        // as few steps is far from it (it starts from near-zero outputs, finalLayerInit)
+        TrainingConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "3", "pretrain.validationFraction", "0",
+                "pretrain.policyObservations", "10000");
+        DaggerConfig fresh = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.UNIFORM, 0, DaggerConfig.Refit.FRESH, t.ddpg(),
+                t.pretrain());
+        DaggerConfig continued = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.UNIFORM, 0, DaggerConfig.Refit.CONTINUE,
+                t.ddpg(), t.pretrain());
+        Rng rng = new Rng(5);
+        List<Dagger.Visit> toFit = new ArrayList<>(), agreeing = new ArrayList<>();
+        for (int i = 0; i < 200; i++) {
+            double[] s = {rng.uniform(-1, 1), rng.uniform(-1, 1)};
+            toFit.add(new Dagger.Visit(s, new double[] {0}, new Demonstration(new double[] {Window.best(s)}, false, 1, 1)));
+        }
+        Policy start = new Dagger(fresh, 2, 1).fit(toFit, 1, "start", null).policy();
+        for (Dagger.Visit v : toFit) {
+            agreeing.add(new Dagger.Visit(v.observation(), start.act(v.observation()), new Demonstration(start.act(v.observation()), true, 1, 1)));
+        }
+        Policy kept = new Dagger(continued, 2, 1).fit(agreeing, 2, "continued", start).policy();
+        Policy anew = new Dagger(fresh, 2, 1).fit(agreeing, 2, "fresh", start).policy();
+        double keptGap = 0, freshGap = 0;
+        for (Dagger.Visit v : agreeing) {
+            keptGap = Math.max(keptGap, Math.abs(kept.act(v.observation())[0] - start.act(v.observation())[0]));
+            freshGap = Math.max(freshGap, Math.abs(anew.act(v.observation())[0] - start.act(v.observation())[0]));
+        }
+        assertTrue(keptGap < 0.5 * freshGap, "continued " + keptGap + " against fresh " + freshGap);
+        Json shipped = Json.load(Home.resolve("configs/train/flip-dagger.json"));
+        ConfigException e = assertThrows(ConfigException.class, () -> DaggerConfig.parse(Json.of("test", Json.withOverrides("test",
+                shipped.node(), Map.of("dagger.refit", "continue", "pretrain.policyObservations", "0")))));
+        assertTrue(e.getMessage().contains("refit") && e.getMessage().contains("policyObservations"), e.getMessage());
     }
 
     @Test
