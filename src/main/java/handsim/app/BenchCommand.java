@@ -96,12 +96,14 @@ final class BenchCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
-        if (!(throwHeight > 0.7 && throwHeight < 3)) {
-            throw new IllegalArgumentException("--throw-height must be in (0.7, 3) m, got " + throwHeight);
+        if (!(throwHeight > HeightGoals.LOWEST && throwHeight < HeightGoals.HIGHEST)) {
+            throw new IllegalArgumentException("--throw-height must be in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST
+                    + ") m, got " + throwHeight);
         }
         if (iterations != null && (iterations < 1 || iterations > 1000)) {
             throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
         }
+        new OutputPaths().file("--json", json).check();
         HandModel model = Runtime.model(null);
         SimConfig base = Runtime.simConfig();
         SimConfig config = iterations != null ? base.withSolverIterations(iterations) : base;

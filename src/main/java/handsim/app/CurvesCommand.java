@@ -39,6 +39,7 @@ final class CurvesCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        new OutputPaths().file("--out", out).check();
         List<List<EpisodeStats>> all = new ArrayList<>();
         for (Path r : runs) {
             Path metrics = r.resolve(TrainRun.METRICS);

@@ -59,12 +59,21 @@ final class DaggerCommand implements Callable<Integer> {
         SimConfig simConfig = Runtime.simConfig();
         ThrowEnvs envs = TrainCommand.environments(c.run(), model);
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
-            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Runtime::twinSimulator)
-                    : DaggerRun.start(RunFolders.next(runs, "dagger", c.run().name(), c.learner().seed()), file, envs, rollouts,
-                            Runtime::twinSimulator, provenance(c), initActor);
+            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Runtime::twinSimulator) : started(file, c, envs, rollouts);
             run.run(System.out);
         }
         return 0;
+    }
+
+    /** A new run in a folder of its own (given up again if the run cannot start). */
+    private DaggerRun started(Json file, DaggerRunConfig c, ThrowEnvs envs, Rollouts rollouts) throws IOException {
+        Path dir = RunFolders.claim(runs, "--runs", "dagger", c.run().name(), c.learner().seed());
+        try {
+            return DaggerRun.start(dir, file, envs, rollouts, Runtime::twinSimulator, provenance(c), initActor);
+        } catch (IOException | RuntimeException e) {
+            RunFolders.release(dir);
+            throw e;
+        }
     }
 
     /** What a run folder records about how the run was made. */

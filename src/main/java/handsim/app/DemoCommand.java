@@ -1,19 +1,21 @@
 package handsim.app;
 
-import handsim.report.Outputs;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
+import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.sim.Simulator;
 import handsim.task.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
+import handsim.task.EpisodeLimits;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
-import handsim.train.ThrowPolicyFile;
-import java.nio.file.Files;
 import handsim.task.LoopRecord;
 import handsim.task.SceneSetup;
+import handsim.train.ThrowPolicyFile;
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -50,8 +52,12 @@ final class DemoCommand implements Callable<Integer> {
             description = "range of the random apex goals, m (default: the height task's trained range, configs/tasks/height.json)")
     String heights;
 
-    @Option(names = "--out", paramLabel = "DIR", description = "run folder (default: runs/demo__<object>__<seed>__<time>)")
+    @Option(names = "--out", paramLabel = "DIR", description = "run folder, new or empty (default: a new "
+            + "demo__<object>__<seed>__<time> in --runs)")
     Path out;
+
+    @Option(names = "--runs", paramLabel = "DIR", description = "where the new run folder goes (default: runs/)")
+    Path runs;
 
     @Option(names = "--headless", description = "run headless even when a display is available")
     boolean headless;
@@ -77,6 +83,9 @@ final class DemoCommand implements Callable<Integer> {
         if (loops < 1 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [1, 100000], got " + loops);
         }
+        if (out != null && runs != null) {
+            throw new IllegalArgumentException("--out names the run folder, --runs where a new one goes: give one of them");
+        }
         if (export != null && !headless && ViewerSession.hasDisplay()) {
             throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
         }
@@ -93,7 +102,8 @@ final class DemoCommand implements Callable<Integer> {
                 System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
             }
             RunExport flipExport = RunExport.to(export);
-            new FlipDemo(object, seed, loops).run(out != null ? out : RunFolders.next(null, "demo", object, seed), flipExport);
+            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out)
+                    : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
             return 0;
         }
         HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
@@ -106,24 +116,45 @@ final class DemoCommand implements Callable<Integer> {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
         HeightTask task = Runtime.heightTask(goals);
-        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
+        EpisodeLimits limits = Runtime.episodeLimits();
+        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), limits, Runtime.launches(),
                 Runtime.object(object), task, controller.equals("learned")
                         ? ThrowPolicyFile.load(shippedPolicy(object)).forTask(task, Runtime.object(object)) : obs -> task.nominalThrow());
+        Path dir = out != null ? RunFolders.claimGiven("--out", out) : RunFolders.claim(runs, "--runs", "demo", object, seed);
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
                 ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
-        Path dir = out != null ? out : RunFolders.next(null, "demo", object, seed);
+        try {
+            run(evaluation, limits, goals, dir, exported);
+        } catch (RuntimeException e) { // a diverged world, a demo that gave up: no run folder is left half-written
+            RunFolders.release(dir);
+            throw e;
+        }
+        return 0;
+    }
 
+    /**
+     * The headless demo: throws until --loops, giving up after limits' failed throw-ins in a row;
+     * then its run folder, and the animation if {@code exported} is not null.
+     */
+    private void run(CatchEvaluation evaluation, EpisodeLimits limits, HeightGoals goals, Path dir, RunExport exported)
+            throws IOException {
         List<LoopRecord> throwsMade = new ArrayList<>();
         List<Long> throwSeeds = new ArrayList<>();
-        int episodes = 0, firstCatchMisses = 0;
+        int episodes = 0, firstCatchMisses = 0, failedInARow = 0;
         long t0 = System.nanoTime();
         try (Simulator sim = Runtime.simulator(Runtime.model(null), Runtime.simConfig())) {
             for (long s = seed; throwsMade.size() < loops; s++) {
+                if (failedInARow == limits.maxFailedThrowIns()) {
+                    throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch "
+                            + "(seeds " + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), "
+                            + throwsMade.size() + " of " + loops + " throws made: is the " + object + " one a hand can catch?");
+                }
                 episodes++;
+                boolean caughtIn = false;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
                 while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
-                    LoopRecord r = episode.tick();
+                    LoopRecord r = evaluation.tick(episode, s); // a divergence names the seed and loop
                     if (exported != null) {
                         exported.afterTick(sim);
                     }
@@ -131,6 +162,7 @@ final class DemoCommand implements Callable<Integer> {
                         continue;
                     }
                     if (r.index() == 0) {
+                        caughtIn = r.caught();
                         firstCatchMisses += r.caught() ? 0 : 1;
                         System.out.printf("episode %d: object thrown in, %s%n", s, r.caught() ? "caught" : "missed");
                         continue;
@@ -140,18 +172,18 @@ final class DemoCommand implements Callable<Integer> {
                     System.out.printf("throw %3d/%d: goal %.3f m  apex %.3f m  error %+.3f m  %s%n", throwsMade.size(), loops,
                             r.targetHeight(), r.apexHeight(), r.apexHeight() - r.targetHeight(), r.caught() ? "caught" : "DROPPED");
                 }
+                failedInARow = caughtIn ? 0 : failedInARow + 1;
             }
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
         if (exported != null) {
-            exported.write("handsim demo: height task, " + object + ", " + controller + " controller, seed " + seed);
+            exported.write("handsim demo: height task, " + object + ", " + controllerShown + " controller, seed " + seed);
         }
-        return 0;
     }
 
     private void writeRun(Path dir, List<LoopRecord> loopsMade, List<Long> seeds, int episodes, int firstCatchMisses,
-            HeightGoals goals, double wall) throws java.io.IOException {
+            HeightGoals goals, double wall) throws IOException {
         int n = loopsMade.size();
         double[] index = new double[n], goal = new double[n], apex = new double[n];
         StringBuilder csv = new StringBuilder("throw,episode_seed,goal_m,apex_m,error_m,caught\n");
@@ -201,9 +233,10 @@ final class DemoCommand implements Callable<Integer> {
             if (parts.length == 2) {
                 return new HeightGoals(Double.parseDouble(parts[0]), Double.parseDouble(parts[1]));
             }
-        } catch (NumberFormatException e) {
-            // fall through to the message below
+        } catch (IllegalArgumentException e) {
+            // not numbers, or out of range: the message below
         }
-        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with 0 < LOW <= HIGH, got \"" + text + "\"");
+        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with " + HeightGoals.LOWEST + " < LOW <= HIGH < "
+                + HeightGoals.HIGHEST + ", got \"" + text + "\"");
     }
 }

@@ -28,6 +28,7 @@ import handsim.task.FlipTask;
 import handsim.task.HeightErrors;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchSensitivity;
+import handsim.task.LoopProgress;
 import handsim.task.LoopRecord;
 import handsim.task.StateVector;
 import handsim.task.Tasks;
@@ -296,8 +297,9 @@ final class EvaluateCommand implements Callable<Integer> {
         if (tests < 1 || tests > 100000) {
             throw new IllegalArgumentException("--tests must be in [1, 100000], got " + tests);
         }
-        if (throwHeight != null && !(throwHeight > 0.7 && throwHeight < 3)) {
-            throw new IllegalArgumentException("--throw-height must be in (0.7, 3) m, got " + throwHeight);
+        if (throwHeight != null && !(throwHeight > HeightGoals.LOWEST && throwHeight < HeightGoals.HIGHEST)) {
+            throw new IllegalArgumentException("--throw-height must be in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST
+                    + ") m, got " + throwHeight);
         }
         if (throwHeight != null && (goals != null || task.equals("box"))) {
             throw new IllegalArgumentException("--throw-height goes with the height task and without --goals");
@@ -332,6 +334,12 @@ final class EvaluateCommand implements Callable<Integer> {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
+        new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
+    }
+
+    /** A progress line with the time left every configs/episode.json progressEveryLoops loops of an episode. */
+    private CatchEvaluation.LoopListener longEpisodeProgress() {
+        return new LoopProgress(System.out, Runtime.episodeLimits().progressEveryLoops(), loops);
     }
 
     /** The controller as printed and in the charts' titles: with --plan, "learned + planner". */
@@ -390,7 +398,7 @@ final class EvaluateCommand implements Callable<Integer> {
         // episode i has seed --seed + i on whichever worker runs it; printed in seed order
         List<EpisodeResult> results = rollouts.run(episodes, resumable(sim -> {
             CatchEvaluation evaluation = evaluation(tasks.height(heightGoals(heightList)), policies, cc, spec);
-            return i -> evaluation.run(sim, seed + i, loops, null);
+            return i -> evaluation.run(sim, seed + i, loops, longEpisodeProgress());
         }, ResultJson::episode, ResultJson::episode), (i, r) -> {
             for (LoopRecord loop : r.loops()) {
                 System.out.printf(Locale.ROOT, "episode %d loop %3d: %-7s apex %s%s  penetration %.1f mm  limit excess %.2f deg"
@@ -660,7 +668,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 CatchEvaluation worker = evaluation;
                 return i -> {
                     // planned episodes take minutes each (the club's up to an hour): say how far they are
-                    CatchEvaluation.LoopListener progress = planning == null ? null : (episodeSeed, loop) -> {
+                    CatchEvaluation.LoopListener progress = planning == null ? longEpisodeProgress() : (episodeSeed, loop) -> {
                         if (loop.index() > 0 && loop.index() % PLANNED_PROGRESS_EVERY == 0 && t.success(loop)) {
                             System.out.printf(Locale.ROOT, "episode %d: %d flip-and-catch loops in a row so far%n", episodeSeed, loop.index());
                         }
@@ -948,7 +956,12 @@ final class EvaluateCommand implements Callable<Integer> {
         Json j = Json.load(file);
         List<double[]> out = new ArrayList<>();
         for (Json g : j.array(key)) {
-            out.add(size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size));
+            double[] goal = size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size);
+            if (key.equals("heights") && !(goal[0] > HeightGoals.LOWEST && goal[0] < HeightGoals.HIGHEST)) {
+                throw g.error("a height goal must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST + ") m, got "
+                        + goal[0]);
+            }
+            out.add(goal);
         }
         if (out.isEmpty()) {
             throw j.fieldError(key, "at least one goal is needed");

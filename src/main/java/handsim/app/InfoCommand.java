@@ -37,6 +37,7 @@ final class InfoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        new OutputPaths().file("--json", json).check();
         HandModel model = ModelLoader.load(modelFile != null ? modelFile : Home.defaultModel());
         ObjectNode out = describe(model);
         if (pose != null) {

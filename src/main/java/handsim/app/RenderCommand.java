@@ -44,6 +44,14 @@ final class RenderCommand implements Callable<Integer> {
         if (fps < 1 || fps > 240) {
             throw new IllegalArgumentException("--fps must be in [1, 240], got " + fps);
         }
+        if (width < 16 || width > 8192 || height < 16 || height > 8192) {
+            throw new IllegalArgumentException("--width and --height must be in [16, 8192] pixels, got " + width + " x " + height);
+        }
+        new OutputPaths().folder("--out", out).check();
+        if (!ViewerSession.hasDisplay()) {
+            throw new IllegalArgumentException("no X display (DISPLAY is not set): render draws with OpenGL "
+                    + "(scripts/handsim render runs it under xvfb-run)");
+        }
         int frames = (int) Math.round(scene.seconds * fps);
         ViewerConfig config = ViewerSession.config();
         try (Scene shown = scene.open("render", config); OffscreenRenderer renderer = new OffscreenRenderer(width, height, config);

@@ -50,7 +50,7 @@ final class Runtime {
     /** An object from {@code configs/objects/NAME.json}. */
     static ObjectSpec object(String name) {
         Path file = objectFile(name);
-        if (!file.toFile().isFile()) {
+        if (!name.matches("[A-Za-z0-9_-]+") || !file.toFile().isFile()) {
             throw new IllegalArgumentException("unknown object \"" + name + "\" (no " + Home.root().relativize(file) + ")");
         }
         return ObjectSpec.load(file);

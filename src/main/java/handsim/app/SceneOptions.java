@@ -62,6 +62,10 @@ final class SceneOptions {
     /** The scene asked for; {@code command} names the command in the notes printed. */
     Scene open(String command, ViewerConfig viewerConfig) {
         if (controller == null && task == null && !plan) {
+            if (!object.equals("sphere")) {
+                throw new IllegalArgumentException("--object goes with --task or --controller (the held ball is a sphere), got "
+                        + object);
+            }
             HandModel model = Runtime.model(null);
             Simulator sim = Runtime.simulator(model, Runtime.simConfig());
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));

@@ -73,11 +73,14 @@ final class ShippedScenes implements SceneCatalog {
         }
     }
 
-    /** Rejects names this catalog does not list (a typo on the command line). */
+    /** Rejects names this catalog does not list and a --policy file that does not exist (typos on the command line). */
     void validate(SceneSetup s) {
         check("--task", s.task(), TASKS);
         check("--object", s.object(), objects);
         check("--controller", s.controller(), CONTROLLERS);
+        if (policy != null && !Files.isRegularFile(policy)) { // a typo, not a policy that does not fit: refused
+            throw new IllegalArgumentException("--policy: no file " + policy);
+        }
     }
 
     private static void check(String option, String value, List<String> allowed) {

@@ -52,6 +52,11 @@ final class TrainCommand implements Callable<Integer> {
     @Option(names = "--resume", paramLabel = "RUN_DIR", description = "continue the run in this folder from its last checkpoint")
     Path resume;
 
+    @Option(names = "--from-snapshot", description = "with --resume, when the run's checkpoint is missing or damaged: go on "
+            + "from its newest intact earlier checkpoint (checkpoint-previous.zip), else from its newest intact policy "
+            + "snapshot (policies/episode-N.json: the actor with a new critic and an empty replay buffer); recorded in run.json")
+    boolean fromSnapshot;
+
     @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
     Path runs;
 
@@ -84,18 +89,19 @@ final class TrainCommand implements Callable<Integer> {
         if (resume != null && !overrides.isEmpty()) {
             throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
         }
+        if (fromSnapshot && resume == null) {
+            throw new IllegalArgumentException("--from-snapshot goes with --resume RUN_DIR");
+        }
         if (episodes != null && resume == null) {
             throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
                     + "with --set training.episodes=N");
         }
-        TrainConfig c = resume == null ? load(config, overrides)
-                : episodes != null ? TrainRun.extend(resume, episodes, extension()) : TrainRun.savedConfig(resume);
+        TrainConfig c = resume == null ? load(config, overrides) : TrainRun.savedConfig(resume);
         HandModel model = Runtime.model(null);
         SimConfig simConfig = Runtime.simConfig();
         ThrowEnvs envs = environments(c.run(), model);
         try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
-            TrainRun run = resume != null ? TrainRun.resume(resume, envs, rollouts)
-                    : TrainRun.start(runFolder(c), c, envs, rollouts, provenance(c), initActor);
+            TrainRun run = resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
             tellLauncher(run.dir());
             run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
@@ -140,8 +146,21 @@ final class TrainCommand implements Callable<Integer> {
                 new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
     }
 
-    private Path runFolder(TrainConfig c) {
-        return RunFolders.next(runs, c.run().task(), c.run().name(), c.learner().seed());
+    /** A new run in a folder of its own (given up again if the run cannot start). */
+    private TrainRun started(TrainConfig c, ThrowEnvs envs, Rollouts rollouts) throws IOException {
+        Path dir = RunFolders.claim(runs, "--runs", c.run().task(), c.run().name(), c.learner().seed());
+        try {
+            return TrainRun.start(dir, c, envs, rollouts, provenance(c), initActor);
+        } catch (IOException | RuntimeException e) {
+            RunFolders.release(dir);
+            throw e;
+        }
+    }
+
+    /** The run of --resume, its budget raised to --episodes if given (recorded only once it can go on). */
+    private TrainRun resumed(ThrowEnvs envs, Rollouts rollouts) throws IOException {
+        TrainRun run = TrainRun.resume(resume, envs, rollouts, fromSnapshot, note -> System.out.println("handsim train: " + note));
+        return episodes != null ? run.extendedTo(episodes, extension()) : run;
     }
 
     /** What {@code run.json} records about an extension of the run's budget. */

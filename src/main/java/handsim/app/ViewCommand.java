@@ -48,12 +48,27 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--screenshot", paramLabel = "FILE", description = "write the last frame drawn to FILE (PNG) on exit")
     Path screenshot;
 
+    @Option(names = "--scene", paramLabel = "NAME", description = "snap: play a Card Snapping trial instead (the soft-body "
+            + "cards of thesis 4.2.4)")
+    String scene;
+
+    @Option(names = "--trajectory", paramLabel = "FILE", description = "with --scene snap: the trajectory.json of `cards snap "
+            + "--out` to play (default: run the configured trial with coarse fingertips first)")
+    Path trajectory;
+
     @Override
     public Integer call() {
+        if (scene != null) {
+            if (!scene.equals("snap")) {
+                throw new IllegalArgumentException("--scene must be snap, got \"" + scene + "\"");
+            }
+            return CardsPlayback.play(trajectory, benchmarkFrames);
+        }
         if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
         }
         HeightGoals goals = DemoCommand.parseHeights(heights);
+        new OutputPaths().file("--screenshot", screenshot).check();
         return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, plan, benchmarkFrames, screenshot);
     }
 }

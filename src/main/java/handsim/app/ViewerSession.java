@@ -32,13 +32,18 @@ final class ViewerSession {
      * {@code render} draws. With {@code plan} a throw planner chooses the flip task's throws.
      */
     static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, Path policy, boolean plan, ViewerConfig config) {
+        SwitchingScene scene = new SwitchingScene(catalog(wanted, goals, policy, plan, config), wanted);
+        scene.openingNotes().forEach(n -> System.out.println("handsim " + command + ": " + n));
+        return scene;
+    }
+
+    /** The catalog of {@link ShippedScenes} for the options given; a name it does not list is refused. */
+    private static ShippedScenes catalog(SceneSetup wanted, HeightGoals goals, Path policy, boolean plan, ViewerConfig config) {
         ViewerConfig.Goals g = config.goals();
         ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy,
                 plan);
         catalog.validate(wanted);
-        SwitchingScene scene = new SwitchingScene(catalog, wanted);
-        scene.openingNotes().forEach(n -> System.out.println("handsim " + command + ": " + n));
-        return scene;
+        return catalog;
     }
 
     /** True when an X display is set (GLFW needs one). */
@@ -54,11 +59,12 @@ final class ViewerSession {
      */
     static int open(String command, SceneSetup wanted, HeightGoals goals, Path policy, boolean plan, int benchmarkFrames,
             Path screenshot) {
+        ViewerConfig config = config();
+        catalog(wanted, goals, policy, plan, config); // bad names and settings are refused first
         if (!hasDisplay()) {
             throw new IllegalArgumentException("no X display (DISPLAY is not set): the viewer needs one "
                     + "(scripts/handsim demo runs headless; view --benchmark-frames N runs under xvfb-run)");
         }
-        ViewerConfig config = config();
         String prefix = "handsim " + command + ": ";
         SwitchingScene scene = scene(command, wanted, goals, policy, plan, config);
         ViewerConfig.Pacing p = config.pacing();

@@ -12,7 +12,6 @@ import handsim.rollout.Rollouts;
 import handsim.task.Tasks;
 import handsim.train.ThrowEnvs;
 import handsim.train.Warmstart;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.util.List;
@@ -46,8 +45,7 @@ final class WarmstartCommand implements Callable<Integer> {
         ThrowEnvs envs = TrainCommand.environments(c.train().run(), model);
         Tasks tasks = Runtime.tasks();
         double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
-        Path dir = RunFolders.next(runs, "warmstart", c.train().run().name(), c.train().learner().seed());
-        Files.createDirectories(dir);
+        Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
         ObjectNode run = Json.mapper().createObjectNode();
         run.put("command", "scripts/handsim warmstart --config " + config);

@@ -1,6 +1,7 @@
 package handsim.config;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
@@ -25,7 +26,8 @@ import java.util.Set;
  */
 public final class Json {
 
-    private static final ObjectMapper MAPPER = new ObjectMapper();
+    /** Strict: text after the JSON value (a second object, a stray character) is an error too. */
+    private static final ObjectMapper MAPPER = new ObjectMapper().enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
 
     private final String source;
     private final String path;
@@ -40,25 +42,46 @@ public final class Json {
 
     /** Parses a file; syntax errors name the file, line and column. */
     public static Json load(Path file) {
+        byte[] bytes;
         try {
-            byte[] bytes = Files.readAllBytes(file);
-            ReadLog.record(file, bytes);
-            return of(file.toString(), MAPPER.readTree(bytes));
-        } catch (JsonProcessingException e) {
-            throw new ConfigException(file + ": not valid JSON at line " + e.getLocation().getLineNr()
-                    + ", column " + e.getLocation().getColumnNr() + ": " + e.getOriginalMessage());
+            bytes = Files.readAllBytes(file);
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new ConfigException(file + ": no such file");
         } catch (IOException e) {
-            throw new ConfigException(file + ": cannot read: " + e.getMessage(), e);
+            String reason = e instanceof java.nio.file.FileSystemException f && f.getReason() != null ? f.getReason() : e.getMessage();
+            throw new ConfigException(file + ": cannot read it (" + (Files.isDirectory(file) ? "a folder" : reason) + ")", e);
+        }
+        ReadLog.record(file, bytes);
+        String text;
+        try {
+            text = java.nio.charset.StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new ConfigException(file + ": not a JSON text file (it is not UTF-8)");
+        }
+        return parse(file.toString(), text);
+    }
+
+    /** Parses JSON text; {@code source} names it in error messages, with the line and column of a syntax error. */
+    public static Json parse(String source, String text) {
+        try {
+            return of(source, MAPPER.readTree(text.startsWith("\ufeff") ? text.substring(1) : text));
+        } catch (JsonProcessingException e) {
+            String where = e.getLocation() == null ? "" : " at line " + e.getLocation().getLineNr() + ", column "
+                    + e.getLocation().getColumnNr();
+            throw new ConfigException(source + ": not valid JSON" + where + ": " + plain(e.getOriginalMessage()));
         }
     }
 
-    /** Parses JSON text; {@code source} names it in error messages. */
-    public static Json parse(String source, String text) {
-        try {
-            return of(source, MAPPER.readTree(text));
-        } catch (JsonProcessingException e) {
-            throw new ConfigException(source + ": not valid JSON: " + e.getOriginalMessage());
+    /** Jackson's message about a syntax error without its internals (character codes, parser features to enable). */
+    static String plain(String message) {
+        if (message.contains("ALLOW_NON_NUMERIC_NUMBERS")) {
+            return message.replaceFirst(":.*", "") + " (NaN and Infinity are not JSON numbers)";
         }
+        if (message.contains("ALLOW_COMMENTS")) {
+            return "a comment, which JSON does not have (use a \"comment\" field)";
+        }
+        return message.replaceAll(" \\(code [^)]*\\)", "").replaceAll(":? *enable `.*", "")
+                .replaceAll("\\s*\\((for|start marker)[^\n]*\\[Source.*", "").lines().findFirst().orElse("");
     }
 
     public static Json of(String source, JsonNode node) {
@@ -208,9 +231,21 @@ public final class Json {
     public double number(String name, double min, double max) {
         double v = number(name);
         if (v < min || v > max) {
-            throw fieldError(name, "must be in [" + min + ", " + max + "], got " + v);
+            throw fieldError(name, "must be in [" + show(min) + ", " + show(max) + "], got " + show(v));
         }
         return v;
+    }
+
+    /** A number as people write it: 100, 0.01, 1E-6, 2.5E+8. */
+    public static String show(double v) {
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        if (v == Math.rint(v) && Math.abs(v) < 1e7) {
+            return Long.toString((long) v);
+        }
+        java.math.BigDecimal b = java.math.BigDecimal.valueOf(v).stripTrailingZeros();
+        return Math.abs(v) >= 1e-4 && Math.abs(v) < 1e7 ? b.toPlainString() : b.toString();
     }
 
     /** A required number strictly greater than zero. */

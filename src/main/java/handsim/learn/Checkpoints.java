@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.NullNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.report.Outputs;
 import java.io.BufferedOutputStream;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -28,7 +29,7 @@ import org.deeplearning4j.util.ModelSerializer;
  * twin critics (DL4J {@link ModelSerializer}; actor and critics with their Adam state and step
  * counts), the normaliser's statistics, the replay buffer, the replay generator's state and the
  * update count, plus a caller's JSON ({@link Trainer} puts its own counters and generator there).
- * Written atomically ({@link AtomicFiles}): a run killed while saving keeps its previous
+ * Written atomically ({@link Outputs}): a run killed while saving keeps its previous
  * checkpoint. After loading, the agent acts and learns exactly as the saved one would have.
  *
  * <pre>
@@ -65,7 +66,7 @@ public final class Checkpoints {
         norm.set("m2", Json.array(agent.normalizer.rawM2()));
         state.set("extra", extra == null ? NullNode.getInstance() : extra);
 
-        AtomicFiles.write(file, out -> {
+        Outputs.write(file, out -> {
             ZipOutputStream zip = new ZipOutputStream(out);
             zip.setLevel(Deflater.BEST_SPEED);
             put(zip, "state.json", Json.pretty(state).getBytes(StandardCharsets.UTF_8));
@@ -86,7 +87,45 @@ public final class Checkpoints {
         });
     }
 
+    /** A checkpoint file that cannot be read back: truncated, not a zip, an entry missing or unreadable. */
+    public static final class Damaged extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        private final String reason;
+
+        public Damaged(Path file, Exception cause) {
+            super(file + " is damaged (" + reason(cause) + ")", cause);
+            this.reason = reason(cause);
+        }
+
+        /** What is wrong with it, in one line. */
+        public String reason() {
+            return reason;
+        }
+
+        private static String reason(Exception e) {
+            String m = e.getMessage() == null || e.getMessage().isBlank() ? e.getClass().getSimpleName() : e.getMessage();
+            m = m.lines().findFirst().orElse(m);
+            return m.length() > 160 ? m.substring(0, 160) + "..." : m;
+        }
+    }
+
+    /**
+     * The agent and caller's JSON saved in {@code file}; a file that is not a complete, readable
+     * checkpoint fails with {@link Damaged}, a missing one with {@link java.nio.file.NoSuchFileException}.
+     */
     public static Loaded load(Path file) throws IOException {
+        if (!Files.exists(file)) {
+            throw new java.nio.file.NoSuchFileException(file.toString());
+        }
+        try {
+            return read(file);
+        } catch (IOException | RuntimeException e) {
+            throw new Damaged(file, e);
+        }
+    }
+
+    private static Loaded read(Path file) throws IOException {
         Map<String, byte[]> entries = new HashMap<>();
         try (ZipInputStream zip = new ZipInputStream(Files.newInputStream(file))) {
             for (ZipEntry e; (e = zip.getNextEntry()) != null; ) {
@@ -143,7 +182,7 @@ public final class Checkpoints {
     private static byte[] entry(Map<String, byte[]> entries, Path file, String name) throws IOException {
         byte[] b = entries.get(name);
         if (b == null) {
-            throw new IOException(file + ": not a complete checkpoint, entry " + name + " is missing");
+            throw new IOException("entry " + name + " is missing");
         }
         return b;
     }

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.report.Outputs;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -164,7 +165,7 @@ public final class Policy {
     // ---- file ---------------------------------------------------------------------------------
 
     public void save(Path file) throws IOException {
-        AtomicFiles.write(file, out -> out.write((Json.pretty(toJson()) + "\n").getBytes(StandardCharsets.UTF_8)));
+        Outputs.write(file, out -> out.write((Json.pretty(toJson()) + "\n").getBytes(StandardCharsets.UTF_8)));
     }
 
     public ObjectNode toJson() {

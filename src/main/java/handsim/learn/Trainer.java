@@ -72,6 +72,30 @@ public final class Trainer {
         return new Trainer(config, agent, new Rng(root.nextLong()), 0);
     }
 
+    /**
+     * A run continued with {@code agent} after {@code episodes} episodes and {@code steps}
+     * decisions (a run whose checkpoints were lost, from a saved actor): the episodes go on with
+     * the seeds and noise an uninterrupted run gives them (the episode generator is drawn forward
+     * past the episodes played), the noise at its scale for {@code steps}; {@code recentRewards}
+     * (oldest first) seed the moving average. What the checkpoint held and the agent lacks (a
+     * trained critic, the replay buffer) makes the rest of the run differ from the lost one.
+     */
+    public static Trainer continueFrom(TrainingConfig config, DdpgAgent agent, long episodes, long steps,
+            List<Double> recentRewards, double elapsedSeconds) {
+        Trainer t = withAgent(config, agent);
+        Trainer fresh = new Trainer(config, agent, t.episodeRng, elapsedSeconds);
+        for (long e = 0; e < episodes; e++) {
+            fresh.nextRequest(); // each episode draws its env and noise seeds
+        }
+        fresh.episodes = episodes;
+        fresh.steps = steps;
+        recentRewards.forEach(fresh.recentRewards::addLast);
+        while (fresh.recentRewards.size() > config.training().movingAverageWindow()) {
+            fresh.recentRewards.removeFirst();
+        }
+        return fresh;
+    }
+
     /** Continues a run from its checkpoint, with the configuration saved there. */
     public static Trainer resume(Path checkpoint) throws IOException {
         return resume(checkpoint, null);
@@ -99,6 +123,18 @@ public final class Trainer {
             t.recentRewards.add(r);
         }
         s.requireNoUnknownFields();
+        return t;
+    }
+
+    /** This run going on under {@code other} (a larger budget, say); its ddpg section must be this run's. */
+    public Trainer withConfig(TrainingConfig other) {
+        if (!other.ddpg().equals(config.ddpg())) {
+            throw new IllegalArgumentException("the ddpg section differs from the run's");
+        }
+        Trainer t = new Trainer(other, agent, episodeRng, elapsedSeconds());
+        t.episodes = episodes;
+        t.steps = steps;
+        t.recentRewards.addAll(recentRewards);
         return t;
     }
 

@@ -23,6 +23,17 @@ public final class ModelLoader {
     /** Sites the controller needs. */
     public static final List<String> REQUIRED_SITES = List.of("palm_center");
 
+    /*
+     * Sanity limits of an arm and hand (SI): a body from a gram to 100 kg; a shape's radius,
+     * side, length or offset from 0.1 mm (thinner ones fall through contacts at h = 0.2 ms) to
+     * 2 m (larger is no body part, nor anything a hand catches); a joint torque up to 1000 N m
+     * (a strong shoulder gives about 100); passive damping up to 100 N m s/rad.
+     */
+    static final double MIN_BODY_MASS = 1e-3, MAX_BODY_MASS = 100;
+    static final double MIN_SIZE = 1e-4, MAX_SIZE = 2;
+    static final double MAX_TORQUE = 1000;
+    static final double MAX_PASSIVE_DAMPING = 100;
+
     private ModelLoader() {
     }
 
@@ -104,10 +115,8 @@ public final class ModelLoader {
                             + range[0] + ", " + range[1] + "]");
                 }
                 double[] torque = torqueLimits(d);
-                double passive = d.number("passiveDamping", 0.0);
-                if (passive < 0) {
-                    throw d.fieldError("passiveDamping", "must be >= 0 N m s/rad, got " + passive);
-                }
+                double passive = d.has("passiveDamping") ? d.number("passiveDamping", 0, MAX_PASSIVE_DAMPING)
+                        : d.number("passiveDamping", 0.0);
                 d.requireNoUnknownFields();
                 Dof dof = new Dof(dofs.size(), dofName, joint.index(), s, axis, Math.toRadians(range[0]),
                         Math.toRadians(range[1]), torque[0], torque[1], passive);
@@ -129,7 +138,7 @@ public final class ModelLoader {
             jointNames.put(jointName, joint.index());
             joints.add(joint);
 
-            double mass = b.positive("mass");
+            double mass = b.number("mass", MIN_BODY_MASS, MAX_BODY_MASS);
             List<Shape> shapes = new ArrayList<>();
             for (Json g : b.array("shapes")) {
                 shapes.add(parseShape(g));
@@ -176,11 +185,15 @@ public final class ModelLoader {
         Json t = d.get("torqueLimit");
         if (t.node().isNumber()) {
             double limit = d.positive("torqueLimit");
+            if (limit > MAX_TORQUE) {
+                throw t.error("must be in (0, " + Json.show(MAX_TORQUE) + "] N m, got " + Json.show(limit));
+            }
             return new double[] {-limit, limit};
         }
         double[] r = t.asNumbers(2);
-        if (!(r[0] < 0 && r[1] > 0)) {
-            throw t.error("torque limits must be [min < 0, max > 0] N m, got [" + r[0] + ", " + r[1] + "]");
+        if (!(r[0] < 0 && r[1] > 0 && r[0] >= -MAX_TORQUE && r[1] <= MAX_TORQUE)) {
+            throw t.error("torque limits must be [min, max] with -" + Json.show(MAX_TORQUE) + " <= min < 0 < max <= "
+                    + Json.show(MAX_TORQUE) + " N m, got [" + Json.show(r[0]) + ", " + Json.show(r[1]) + "]");
         }
         return r;
     }
@@ -190,35 +203,40 @@ public final class ModelLoader {
         g.allow("comment");
         String type = g.choice("type", "capsule", "cylinder", "box", "sphere");
         Shape shape = switch (type) {
-            case "capsule" -> {
-                Vec3 a = g.vec3("from"), b = g.vec3("to");
-                double r = g.positive("radius");
+            case "capsule", "cylinder" -> {
+                Vec3 a = position(g, "from"), b = position(g, "to");
+                double r = g.number("radius", MIN_SIZE, MAX_SIZE);
                 if (a.distance(b) < 1e-9) {
-                    throw g.fieldError("to", "capsule end points must differ, got " + b);
+                    throw g.fieldError("to", type + " end points must differ, got " + b);
                 }
-                yield new Shape.Capsule(a, b, r);
-            }
-            case "cylinder" -> {
-                Vec3 a = g.vec3("from"), b = g.vec3("to");
-                double r = g.positive("radius");
-                if (a.distance(b) < 1e-9) {
-                    throw g.fieldError("to", "cylinder end points must differ, got " + b);
-                }
-                yield new Shape.Cylinder(a, b, r);
+                yield type.equals("capsule") ? new Shape.Capsule(a, b, r) : new Shape.Cylinder(a, b, r);
             }
             case "box" -> {
                 Vec3 size = g.vec3("size");
-                if (!(size.x() > 0 && size.y() > 0 && size.z() > 0)) {
-                    throw g.fieldError("size", "box sizes must be > 0, got " + size);
+                if (!(Math.min(size.x(), Math.min(size.y(), size.z())) >= MIN_SIZE
+                        && Math.max(size.x(), Math.max(size.y(), size.z())) <= MAX_SIZE)) {
+                    throw g.fieldError("size", "box sides must be in [" + Json.show(MIN_SIZE) + ", " + Json.show(MAX_SIZE)
+                            + "] m, got " + size);
                 }
                 Vec3 rot = g.vec3("rotationDeg", Vec3.ZERO);
-                yield new Shape.Box(g.vec3("center", Vec3.ZERO), size, Quat.fromRotationVector(rot.times(Math.PI / 180)));
+                yield new Shape.Box(g.has("center") ? position(g, "center") : Vec3.ZERO, size,
+                        Quat.fromRotationVector(rot.times(Math.PI / 180)));
             }
-            case "sphere" -> new Shape.Sphere(g.vec3("center", Vec3.ZERO), g.positive("radius"));
+            case "sphere" -> new Shape.Sphere(g.has("center") ? position(g, "center") : Vec3.ZERO,
+                    g.number("radius", MIN_SIZE, MAX_SIZE));
             default -> throw new IllegalStateException(type);
         };
         g.requireNoUnknownFields();
         return shape;
+    }
+
+    /** A point of a shape (m, in its body's frame), at most {@link #MAX_SIZE} from the origin. */
+    private static Vec3 position(Json g, String name) {
+        Vec3 p = g.vec3(name);
+        if (!(p.norm() <= MAX_SIZE)) {
+            throw g.fieldError(name, "must lie within " + Json.show(MAX_SIZE) + " m of the frame's origin, got " + p);
+        }
+        return p;
     }
 
     private static Map<String, Integer> parseBreakdown(Json root, int actualDofs) {

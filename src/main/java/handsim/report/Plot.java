@@ -10,12 +10,9 @@ import java.awt.geom.Line2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
-import javax.imageio.ImageIO;
 
 /**
  * A small x-y chart written as PNG with Java2D (no display needed): line, point and bar series,
@@ -65,14 +62,9 @@ public final class Plot {
         return this;
     }
 
-    /** Writes the chart as a PNG (atomically: a temporary file moved into place). */
+    /** Writes the chart as a PNG (atomically, {@link Outputs}). */
     public void writePng(Path file) throws IOException {
-        BufferedImage img = render();
-        Path dir = file.toAbsolutePath().getParent();
-        Files.createDirectories(dir);
-        Path tmp = Files.createTempFile(dir, ".plot", ".png");
-        ImageIO.write(img, "png", tmp.toFile());
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writePng(file, render());
     }
 
     BufferedImage render() {

@@ -23,6 +23,12 @@ public record ObjectSpec(String name, List<Shape> shapes, MassProperties mass, O
         shapes = List.copyOf(shapes);
     }
 
+    /**
+     * Sanity limits of a thrown object's mass (kg): from a gram to 10 kg, more than a hand holds
+     * up. Its shapes have the limits of {@link ModelLoader#parseShape}.
+     */
+    static final double MIN_MASS = 1e-3, MAX_MASS = 10;
+
     public static ObjectSpec load(Path file) {
         return parse(Json.load(file));
     }
@@ -30,7 +36,7 @@ public record ObjectSpec(String name, List<Shape> shapes, MassProperties mass, O
     public static ObjectSpec parse(Json j) {
         j.allow("comment");
         String name = j.string("name");
-        double mass = j.positive("mass");
+        double mass = j.number("mass", MIN_MASS, MAX_MASS);
         List<Shape> shapes = new ArrayList<>();
         for (Json s : j.array("shapes")) {
             shapes.add(ModelLoader.parseShape(s));

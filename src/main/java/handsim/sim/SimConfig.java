@@ -20,6 +20,18 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
         int maxContactsPerPair, double linearDampingPerSecond, double angularDampingPerSecond, int solverIterations,
         double sor) {
 
+    /*
+     * Sanity limits of a world the hand can work in (SI). Outside them a run diverges or means
+     * nothing: a step above 10 ms cannot hold the arm's PD servos (their periods are a few ms)
+     * and one below 1 us would take days per simulated minute; gravity from a twentieth of the
+     * Earth's to ten times it; contacts from a soft 100 N/m (a 0.1 kg ball sinks 1 cm) to a
+     * stiff 1e8 N/m (the paper's is 5e4); the ground below the shoulder (0.95 m high).
+     */
+    static final double MIN_TIME_STEP = 1e-6, MAX_TIME_STEP = 0.01;
+    static final double MIN_GRAVITY = 0.5, MAX_GRAVITY = 100;
+    static final double MIN_CONTACT_STIFFNESS = 1e2, MAX_CONTACT_STIFFNESS = 1e8;
+    static final double MIN_GROUND = -10, MAX_GROUND = 0.5;
+
     public static SimConfig load(Path file) {
         return parse(Json.load(file));
     }
@@ -32,11 +44,16 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
         damping.allow("comment");
         Json solver = j.get("solver");
         solver.allow("comment");
+        Vec3 gravity = j.vec3("gravity");
+        if (!(gravity.norm() >= MIN_GRAVITY && gravity.norm() <= MAX_GRAVITY)) {
+            throw j.fieldError("gravity", "its magnitude must be in [" + Json.show(MIN_GRAVITY) + ", " + Json.show(MAX_GRAVITY)
+                    + "] m/s^2, got " + Json.show(gravity.norm()) + " m/s^2 " + gravity);
+        }
         SimConfig c = new SimConfig(
-                j.number("timeStep", 1e-6, 0.01),
-                j.vec3("gravity"),
-                j.number("groundHeight"),
-                contact.positive("stiffness"),
+                j.number("timeStep", MIN_TIME_STEP, MAX_TIME_STEP),
+                gravity,
+                j.number("groundHeight", MIN_GROUND, MAX_GROUND),
+                contact.number("stiffness", MIN_CONTACT_STIFFNESS, MAX_CONTACT_STIFFNESS),
                 contact.number("friction", 0, 10),
                 contact.integer("maxPerPair", 1, 64),
                 damping.number("linearPerSecond", 0, 100),

@@ -112,6 +112,11 @@ public final class CatchEvaluation {
         return task;
     }
 
+    /** When its episodes' objects count as caught or dropped, and how runs of episodes behave. */
+    public EpisodeLimits limits() {
+        return limits;
+    }
+
     /** The object thrown, before a seed varies it within its tolerance. */
     public ObjectSpec object() {
         return object;

@@ -13,7 +13,9 @@ import java.util.Map;
  * A task for watching: endless catch-and-throw, running the episodes of a {@link
  * CatchEvaluation} one after another. When an episode ends (a drop, a time limit, or a diverged
  * simulation) the world is reset and the next seed's object is thrown in; the status says so.
- * The goal (the height, the box) can be moved while it runs.
+ * After {@link EpisodeLimits#maxFailedThrowIns} episodes in a row whose throw-in was not caught
+ * it stops and says why (R or N starts it again). The goal (the height, the box) can be moved
+ * while it runs.
  */
 public final class CatchLoopScene implements InteractiveScene {
 
@@ -29,6 +31,10 @@ public final class CatchLoopScene implements InteractiveScene {
     private int bestInARow;
     private LoopRecord lastThrow;
     private String lastEvent = "thrown in";
+    /** Episodes in a row whose throw-in was not caught. */
+    private int failedThrowIns;
+    /** Why the scene stopped throwing objects in, or null while it runs. */
+    private String stopped;
 
     /** Owns {@code sim} (closed with the scene) and starts the episode of {@code seed}. */
     public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl) {
@@ -47,6 +53,9 @@ public final class CatchLoopScene implements InteractiveScene {
 
     @Override
     public void advance(double seconds) {
+        if (stopped != null) {
+            return; // nothing is thrown in any more: the world stands still until R or N
+        }
         double until = sim.time() + seconds;
         while (sim.time() < until - 1e-12) {
             if (episode.status() != CatchThrowEpisode.Status.RUNNING) {
@@ -79,10 +88,18 @@ public final class CatchLoopScene implements InteractiveScene {
         lastEvent = r.caught() ? (r.index() == 0 ? "caught the throw-in" : "caught") : "dropped";
     }
 
-    /** Ends the episode and throws the next seed's object in. */
+    /** Ends the episode and throws the next seed's object in, unless too many throw-ins in a row failed. */
     private void restart(String event) {
         lastEvent = event;
         catchesInARow = 0;
+        boolean caughtIn = !episode.loops().isEmpty() && episode.loops().get(0).caught();
+        failedThrowIns = caughtIn ? 0 : failedThrowIns + 1;
+        if (failedThrowIns >= evaluation.limits().maxFailedThrowIns()) {
+            stopped = String.format(Locale.ROOT, "stopped: %d throw-ins in a row were not caught (seeds %d-%d; "
+                    + "configs/episode.json maxFailedThrowIns); R or N tries again", failedThrowIns, seed - failedThrowIns + 1, seed);
+            lastEvent = stopped;
+            return;
+        }
         episodes++;
         seed++;
         episode = evaluation.start(sim, seed);
@@ -94,12 +111,14 @@ public final class CatchLoopScene implements InteractiveScene {
         double step = heightControl.step();
         switch (command) {
             case RESET -> {
+                resume();
                 episode = evaluation.start(sim, seed);
                 catchesInARow = 0;
                 lastEvent = "reset";
                 return "reset: episode of seed " + seed + " from the start";
             }
             case NEW_THROW -> {
+                resume();
                 restart("new throw");
                 return "new throw: episode of seed " + seed;
             }
@@ -163,9 +182,18 @@ public final class CatchLoopScene implements InteractiveScene {
         return episode;
     }
 
+    /** After a stop, a command from the person watching starts the throw-ins again. */
+    private void resume() {
+        stopped = null;
+        failedThrowIns = 0;
+    }
+
     @Override
     public Map<String, String> status() {
         Map<String, String> s = new LinkedHashMap<>();
+        if (stopped != null) {
+            s.put("stopped", stopped);
+        }
         s.put("state", episode.state().phase().name());
         // loop 0 catches the throw-in, loop k >= 1 is the k-th throw and its catch
         s.put("loop", Integer.toString(episode.loops().size()));

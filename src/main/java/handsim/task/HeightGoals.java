@@ -11,6 +11,14 @@ import java.util.SplittableRandom;
  */
 public final class HeightGoals {
 
+    /**
+     * Sanity limits of a goal apex (m, world, exclusive). The catch meets a falling object where
+     * it crosses the interception plane, 0.72 m high (configs/controller.json): an apex must lie
+     * above it. An apex of 3 m asks for a release at about sqrt(2 g (3 - 0.9)) = 6.4 m/s from a
+     * palm 0.9 m high, far past the throws the arm makes (its nominal throws reach 1.6 m).
+     */
+    public static final double LOWEST = 0.7, HIGHEST = 3.0;
+
     private double low;
     private double high;
     private SplittableRandom rng = new SplittableRandom(0);
@@ -19,8 +27,9 @@ public final class HeightGoals {
     private int next;
 
     public HeightGoals(double low, double high) {
-        if (!(low > 0 && high >= low)) {
-            throw new IllegalArgumentException("height goals need 0 < low <= high, got [" + low + ", " + high + "]");
+        if (!(low > LOWEST && high >= low && high < HIGHEST)) {
+            throw new IllegalArgumentException("height goals must lie in (" + LOWEST + ", " + HIGHEST + ") m with low <= high, "
+                    + "got [" + low + ", " + high + "]");
         }
         this.low = low;
         this.high = high;

@@ -31,8 +31,9 @@ public final class HeightTask implements ThrowTask {
         public static Config parse(Json j) {
             j.allow("comment");
             double[] range = j.range("goalRange");
-            if (!(range[0] > 0)) {
-                throw j.fieldError("goalRange", "heights must be above 0 m, got " + range[0]);
+            if (!(range[0] > HeightGoals.LOWEST && range[1] < HeightGoals.HIGHEST)) {
+                throw j.fieldError("goalRange", "heights must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST
+                        + ") m, got [" + range[0] + ", " + range[1] + "]");
             }
             Config c = new Config(range[0], range[1], j.positive("sharpness"), j.number("missWeight", 0, 100),
                     j.positive("successTolerance"), ThrowSpace.parse(j.get("throwSpace")));

@@ -52,10 +52,14 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
         }
         s.requireNoUnknownFields();
         StateVector.Encoding state = StateVector.Encoding.read(j);
+        Json provenance = j.get("provenance");
+        if (!provenance.node().isObject()) {
+            throw provenance.error("expected an object (facts about the run that trained it)");
+        }
         ThrowPolicyFile f;
         try {
             f = new ThrowPolicyFile(j.string("task"), j.string("object"), state, space, Policy.parse(j.get("policy")),
-                    (ObjectNode) j.get("provenance").node());
+                    (ObjectNode) provenance.node());
         } catch (IllegalArgumentException e) {
             throw j.fieldError("policy", e.getMessage());
         }

@@ -2,6 +2,7 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.learn.Checkpoints;
 import handsim.learn.DdpgAgent;
 import handsim.learn.EpisodeStats;
 import handsim.learn.LearningCurves;
@@ -15,10 +16,13 @@ import handsim.report.Outputs;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.time.LocalDateTime;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * One training run in its folder ({@code runs/<task>__<name>__<seed>__<time>/}): the merged
@@ -40,6 +44,10 @@ public final class TrainRun {
     /** Provenance: command, seed, commit, and the budget extensions. */
     public static final String RUN_JSON = "run.json";
     public static final String CHECKPOINT = "checkpoint.zip";
+    /** The checkpoint before the last one, kept for a resume that finds the last one damaged. */
+    public static final String PREVIOUS_CHECKPOINT = "checkpoint-previous.zip";
+    /** The folder of the policy snapshots {@code episode-N.json}. */
+    public static final String SNAPSHOTS = "policies";
     public static final String METRICS = "metrics.csv";
     public static final String POLICY = "policy.json";
     /** A warm-started run's copy of its imitation dataset. */
@@ -183,19 +191,85 @@ public final class TrainRun {
         return extended;
     }
 
-    /**
-     * Continues the run in {@code dir} from its last checkpoint, or from the start when it was
-     * stopped before its first one.
-     */
+    /** {@link #resume(Path, ThrowEnvs, handsim.rollout.Rollouts, boolean, Consumer)} without fallback, notes to standard error. */
     public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts) throws IOException {
+        return resume(dir, envs, rollouts, false, System.err::println);
+    }
+
+    /**
+     * Continues the run in {@code dir} from its checkpoint. A run stopped before its first
+     * checkpoint (it has written no checkpoint and no policy yet) starts again from episode 1:
+     * the episodes it played are played again, the same. When a run that had a checkpoint lacks a
+     * usable one (missing, or damaged), the resume is refused with what is missing, and nothing in
+     * the folder changes, unless {@code fromSnapshot}: then the run goes on from the newest intact
+     * of {@link #PREVIOUS_CHECKPOINT} (the checkpoint before the last: the run stays the one it
+     * was) and the policy snapshots {@code policies/episode-N.json} (the actor as it was at
+     * episode N with a new critic and an empty replay buffer, {@link Trainer#continueFrom}: the
+     * rest of the run differs from the lost one), recorded in {@code run.json} under
+     * {@code "fallbacks"}. Leftovers of a killed write are deleted; {@code notes} hears what was
+     * done.
+     */
+    public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, boolean fromSnapshot,
+            Consumer<String> notes) throws IOException {
         TrainConfig config = savedConfig(dir);
-        Path checkpoint = dir.resolve(CHECKPOINT);
+        String problem;
+        try {
+            Trainer trainer = ResumePoint.checkpoint(dir.resolve(CHECKPOINT), config);
+            sweepTemporaryFiles(dir);
+            return new TrainRun(dir, config, envs, rollouts, trainer);
+        } catch (NoSuchFileException e) {
+            if (!ResumePoint.everCheckpointed(dir)) {
+                notes.accept(dir + " stopped before its first checkpoint: training from episode 1");
+                sweepTemporaryFiles(dir);
+                return new TrainRun(dir, config, envs, rollouts, initialTrainer(dir, config, envs));
+            }
+            problem = CHECKPOINT + " is missing";
+        } catch (Checkpoints.Damaged e) {
+            problem = CHECKPOINT + " is damaged (" + e.reason() + ")";
+        }
+        if (!fromSnapshot) {
+            throw new IllegalArgumentException(dir + ": " + problem + ", so the run cannot go on where it stopped (nothing "
+                    + "was changed); add --from-snapshot to go on from its newest intact earlier checkpoint or policy snapshot");
+        }
+        ResumePoint.Found fallback = ResumePoint.fallback(dir, config, envs, notes);
+        if (fallback == null) {
+            throw new IllegalArgumentException(dir + ": " + problem + " and the run has no intact earlier checkpoint ("
+                    + PREVIOUS_CHECKPOINT + ") or policy snapshot (" + SNAPSHOTS + "/episode-N.json) to go on from");
+        }
+        notes.accept(dir + ": " + problem + "; going on from " + fallback.what());
+        sweepTemporaryFiles(dir);
+        ObjectNode record = Json.mapper().createObjectNode();
+        record.put("from", fallback.what());
+        record.put("episodes", fallback.trainer().episodes());
+        record.put("because", problem);
+        record.put("at", LocalDateTime.now().toString());
+        ObjectNode runJson = (ObjectNode) Json.load(dir.resolve(RUN_JSON)).node();
+        runJson.withArray("fallbacks").add(record);
+        Outputs.writeJson(dir.resolve(RUN_JSON), runJson);
+        return new TrainRun(dir, config, envs, rollouts, fallback.trainer());
+    }
+
+    /** The learner of a run's first episode: as {@link #start} made it, from the dataset or policy copied into the run. */
+    private static Trainer initialTrainer(Path dir, TrainConfig config, ThrowEnvs envs) throws IOException {
         Path dataset = dir.resolve(INIT_DATASET);
         Path policy = dir.resolve(INIT_POLICY);
-        Trainer trainer = Files.isRegularFile(checkpoint) ? Trainer.resume(checkpoint, config.learner())
-                : freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
-                        Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
-        return new TrainRun(dir, config, envs, rollouts, trainer);
+        return freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
+                Files.isRegularFile(policy) ? initPolicy(policy, config, envs) : null);
+    }
+
+    /** Deletes what writes killed in the run's folders left behind ({@link Outputs}). */
+    private static void sweepTemporaryFiles(Path dir) throws IOException {
+        Outputs.sweep(dir);
+        Outputs.sweep(dir.resolve(SNAPSHOTS));
+    }
+
+    /**
+     * This run with its budget raised to {@code episodes} ({@link #extend}, which records it in
+     * the folder); to be called on a run just resumed, before it trains.
+     */
+    public TrainRun extendedTo(long episodes, ObjectNode provenance) throws IOException {
+        TrainConfig extended = extend(dir, episodes, provenance);
+        return new TrainRun(dir, extended, envs, rollouts, trainer.withConfig(extended.learner()));
     }
 
     public Path dir() {
@@ -234,15 +308,19 @@ public final class TrainRun {
                     progress.onEpisode(s);
                 }
             };
+            boolean saved = false;
             while (trainer.episodes() < budget) {
                 long before = trainer.episodes();
                 trainer.runRound(this::play, listener, (int) (budget - trainer.episodes()));
-                if (every > 0 && trainer.episodes() / every != before / every) {
+                saved = every > 0 && trainer.episodes() / every != before / every;
+                if (saved) {
                     saveCheckpoint();
                 }
             }
+            if (!saved) {
+                saveCheckpoint();
+            }
         }
-        saveCheckpoint();
         progress.finish();
         out.println("wrote " + dir.resolve(POLICY) + ", " + CHECKPOINT + ", " + METRICS + ", learning.png, losses.png");
     }
@@ -257,7 +335,11 @@ public final class TrainRun {
 
     /** The learner, its policy as a throw policy file, and the curves so far. */
     private void saveCheckpoint() throws IOException {
-        trainer.checkpoint(dir.resolve(CHECKPOINT));
+        Path checkpoint = dir.resolve(CHECKPOINT);
+        if (Files.exists(checkpoint)) {
+            Outputs.keepCopy(checkpoint, dir.resolve(PREVIOUS_CHECKPOINT));
+        }
+        trainer.checkpoint(checkpoint);
         ObjectNode provenance = Json.mapper().createObjectNode();
         provenance.put("run", dir.getFileName().toString());
         provenance.put("episodes", trainer.episodes());
@@ -269,7 +351,7 @@ public final class TrainRun {
                 + dir.getFileName() + ", episode " + trainer.episodes(), "ThrowSpace, see throwSpace");
         ThrowPolicyFile file = new ThrowPolicyFile(config.run().task(), config.run().object(), envs.state().encoding(), envs.space(), actor, provenance);
         file.save(dir.resolve(POLICY));
-        file.save(dir.resolve("policies").resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
+        file.save(dir.resolve(SNAPSHOTS).resolve(String.format(Locale.ROOT, "episode-%05d.json", trainer.episodes())));
         List<EpisodeStats> stats = MetricsCsv.read(dir.resolve(METRICS));
         String title = config.run().task() + " task, " + config.run().object() + " (" + config.run().name() + ", seed "
                 + config.learner().seed() + ")";

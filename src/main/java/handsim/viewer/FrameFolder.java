@@ -1,19 +1,18 @@
 package handsim.viewer;
 
+import handsim.report.Outputs;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
-import javax.imageio.ImageIO;
 
 /**
  * Numbered PNG frames {@code 00000.png, 00001.png, ...} in one folder, which
@@ -80,13 +79,9 @@ public final class FrameFolder implements AutoCloseable {
         }
     }
 
-    /** Writes a PNG atomically: a temporary file in the same folder, moved into place. */
+    /** Writes a PNG atomically ({@link Outputs}). */
     public static void writePng(BufferedImage image, Path file) throws IOException {
-        Path dir = file.toAbsolutePath().getParent();
-        Files.createDirectories(dir);
-        Path tmp = Files.createTempFile(dir, ".frame", ".png");
-        ImageIO.write(image, "png", tmp.toFile());
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writePng(file, image);
     }
 
     /** An image from OpenGL's RGBA pixels (rows bottom-up, as glReadPixels returns them). */

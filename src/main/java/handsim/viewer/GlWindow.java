@@ -14,16 +14,27 @@ final class GlWindow implements AutoCloseable {
 
     final long handle;
     private final GLFWErrorCallback errors;
+    /** GLFW's last error, for the message of a window that cannot be opened. */
+    private String lastError = "";
+    /** While the window opens, an error is said once, by the exception that follows it. */
+    private boolean opening = true;
 
+    /** Opens the window; without a usable display fails with one line ({@link IllegalArgumentException}) saying what to do. */
     GlWindow(int width, int height, String title, boolean visible) {
-        errors = GLFWErrorCallback.createPrint(System.err).set();
+        errors = GLFWErrorCallback.create((code, description) -> {
+            lastError = GLFWErrorCallback.getDescription(description);
+            if (!opening) {
+                System.err.println("handsim: GLFW: " + lastError);
+            }
+        });
+        errors.set();
         if (System.getenv("WAYLAND_DISPLAY") == null) {
             // X11 only: GLFW would otherwise probe for Wayland first and complain about it
             glfwInitHint(GLFW_PLATFORM, GLFW_PLATFORM_X11);
         }
         if (!glfwInit()) {
             errors.free();
-            throw new IllegalStateException("cannot open the X display (DISPLAY=" + System.getenv("DISPLAY")
+            throw new IllegalArgumentException("cannot open the X display (DISPLAY=" + System.getenv("DISPLAY") + "; " + lastError
                     + "): run under xvfb-run (apt-get install xvfb xauth libgl1-mesa-dri)");
         }
         glfwDefaultWindowHints();
@@ -34,10 +45,12 @@ final class GlWindow implements AutoCloseable {
         if (handle == 0) {
             glfwTerminate();
             errors.free();
-            throw new IllegalStateException("cannot create an OpenGL window (is Mesa installed? apt-get install libgl1-mesa-dri)");
+            throw new IllegalArgumentException("cannot create an OpenGL window (" + lastError
+                    + "; is Mesa installed? apt-get install libgl1-mesa-dri)");
         }
         glfwMakeContextCurrent(handle);
         GL.createCapabilities();
+        opening = false;
     }
 
     /** The drawable size in pixels (it may differ from the window size on high-density screens). */

@@ -60,6 +60,14 @@ public final class OffscreenRenderer implements AutoCloseable {
         return readImage(width, height, pixels);
     }
 
+    /** Draws deforming surfaces (a card scene) as {@code camera} sees them and returns the image. */
+    public BufferedImage renderSurfaces(java.util.List<SurfaceMesh> surfaces, Camera camera) {
+        scene.begin(camera, width, height);
+        scene.drawSurfaces(surfaces);
+        glFinish();
+        return readImage(width, height, pixels);
+    }
+
     /** The current read framebuffer as an image. */
     static BufferedImage readImage(int width, int height, ByteBuffer pixels) {
         return FrameFolder.toImage(width, height, readPixels(width, height, pixels));

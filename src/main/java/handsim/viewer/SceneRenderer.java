@@ -78,6 +78,56 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
+     * Deforming surfaces (the card scenes), smooth-shaded with per-vertex normals averaged from
+     * their triangles; two-sided surfaces are lit on both faces.
+     */
+    public void drawSurfaces(java.util.List<SurfaceMesh> surfaces) {
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_LIGHTING);
+        for (SurfaceMesh m : surfaces) {
+            float[] p = m.positions();
+            int[] t = m.triangles();
+            float[] normals = new float[p.length];
+            for (int k = 0; k < t.length / 3; k++) {
+                int a = 3 * t[3 * k];
+                int b = 3 * t[3 * k + 1];
+                int c = 3 * t[3 * k + 2];
+                float ux = p[b] - p[a];
+                float uy = p[b + 1] - p[a + 1];
+                float uz = p[b + 2] - p[a + 2];
+                float vx = p[c] - p[a];
+                float vy = p[c + 1] - p[a + 1];
+                float vz = p[c + 2] - p[a + 2];
+                float nx = uy * vz - uz * vy;
+                float ny = uz * vx - ux * vz;
+                float nz = ux * vy - uy * vx;
+                for (int i : new int[] {a, b, c}) {
+                    normals[i] += nx;
+                    normals[i + 1] += ny;
+                    normals[i + 2] += nz;
+                }
+            }
+            if (m.twoSided()) {
+                glDisable(GL_CULL_FACE);
+                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+                glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+            }
+            color(m.rgba());
+            glBegin(GL_TRIANGLES);
+            for (int idx : t) {
+                glNormal3f(normals[3 * idx], normals[3 * idx + 1], normals[3 * idx + 2]);
+                glVertex3f(p[3 * idx], p[3 * idx + 1], p[3 * idx + 2]);
+            }
+            glEnd();
+            if (m.twoSided()) {
+                glEnable(GL_CULL_FACE);
+                glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+                glColorMaterial(GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+            }
+        }
+    }
+
+    /**
      * Floor, shadows, arm and hand, the object and static boxes (the opaque parts). Floor and
      * shadows lie under everything else and are drawn first without the depth buffer, which
      * saves a depth test and write on half the screen.

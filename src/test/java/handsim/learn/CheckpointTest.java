@@ -74,7 +74,7 @@ class CheckpointTest {
     void aFailedSaveLeavesThePreviousFileIntact(@TempDir Path dir) throws IOException {
         Path file = dir.resolve("checkpoint.zip");
         Files.writeString(file, "previous checkpoint");
-        IOException e = assertThrows(IOException.class, () -> AtomicFiles.write(file, out -> {
+        IOException e = assertThrows(IOException.class, () -> handsim.report.Outputs.write(file, out -> {
             out.write(new byte[1000]);
             throw new IOException("killed while writing");
         }));

@@ -1,0 +1,8 @@
+/**
+ * Contact geometry of the soft-body card simulator: squared distances between points, edges and
+ * triangles with their closest-feature types, gradients and Hessians; the hinge (dihedral) angle;
+ * the edge–edge mollifier; additive continuous collision detection; and {@link
+ * handsim.cards.geom.Jet}, the small forward-mode AD the shell energies use. Pure Java: imports
+ * nothing outside the JDK.
+ */
+package handsim.cards.geom;

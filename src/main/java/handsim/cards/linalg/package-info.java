@@ -1,0 +1,6 @@
+/**
+ * Linear algebra of the card simulator: small dense symmetric eigen-decompositions and PSD
+ * projection, the rotation-variant 3x3 SVD, and the sparse SPD Newton system (ojAlgo's LDLᵀ with
+ * CSparseJ's AMD ordering). The only package that imports ojAlgo or CSparseJ.
+ */
+package handsim.cards.linalg;

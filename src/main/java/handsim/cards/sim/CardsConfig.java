@@ -1,0 +1,76 @@
+package handsim.cards.sim;
+
+import handsim.cards.contact.CollisionMesh.FrictionTable;
+import handsim.config.Json;
+import java.nio.file.Path;
+
+/**
+ * Reads configs/cards/solver.json and configs/cards/materials.json, validating every field
+ * (errors name the file, the field and the bad value).
+ */
+public final class CardsConfig {
+
+    private CardsConfig() {
+    }
+
+    public static SolverSettings solver(Path file) {
+        return solver(Json.load(file));
+    }
+
+    public static SolverSettings solver(Json j) {
+        j.allow("comment", "fields");
+        Json f = j.get("friction");
+        f.allow("comment");
+        SolverSettings s = new SolverSettings(
+                j.number("timeStep", 1e-5, 0.1),
+                j.number("dhat", 1e-7, 1e-2),
+                j.number("newtonTolerance", 1e-9, 1.0),
+                j.integer("maxNewtonIterations", 1, 10_000),
+                j.number("ccdRescaling", 0.1, 1.0),
+                new FrictionTable(f.number("cardCard", 0, 5), f.number("skin", 0, 5), f.number("ground", 0, 5)),
+                j.number("frictionEpsV", 1e-8, 1.0),
+                j.number("kappaScale", 1e-3, 1e20),
+                j.numbers("gravity", 3),
+                j.number("hashCell", 1e-5, 1.0),
+                j.bool("parallelAssembly", false));
+        f.requireNoUnknownFields();
+        j.requireNoUnknownFields();
+        return s;
+    }
+
+    /** The card material named by {@code preset} (or the file's default "card" when null) and the fingertip's. */
+    public record Materials(String cardPreset, ShellMaterial card, SolidMaterial fingertip) {
+    }
+
+    public static Materials materials(Path file, String preset) {
+        return materials(Json.load(file), preset);
+    }
+
+    public static Materials materials(Json j, String preset) {
+        j.allow("comment");
+        String name = j.string("card");
+        Json cards = j.get("cards");
+        ShellMaterial chosen = null;
+        String wanted = preset != null ? preset : name;
+        for (String key : cards.fieldNames()) {
+            Json m = cards.get(key);
+            m.allow("comment");
+            ShellMaterial shell = new ShellMaterial(m.number("density", 1, 1e5), m.number("young", 1, 1e13),
+                    m.number("poisson", 0, 0.499), m.number("thickness", 1e-6, 0.01));
+            m.requireNoUnknownFields();
+            if (key.equals(wanted)) {
+                chosen = shell;
+            }
+        }
+        if (chosen == null) {
+            throw (preset != null ? j.error("card preset \"" + preset + "\" is not among " + cards.fieldNames())
+                    : j.fieldError("card", "\"" + name + "\" is not among " + cards.fieldNames()));
+        }
+        Json t = j.get("fingertip");
+        t.allow("comment");
+        SolidMaterial tip = new SolidMaterial(t.number("density", 1, 1e5), t.number("young", 1, 1e13), t.number("poisson", 0, 0.49));
+        t.requireNoUnknownFields();
+        j.requireNoUnknownFields();
+        return new Materials(wanted, chosen, tip);
+    }
+}

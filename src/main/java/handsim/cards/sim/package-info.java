@@ -1,0 +1,8 @@
+/**
+ * Card scenes and their time stepping: the immutable {@link handsim.cards.sim.SoftWorld} built
+ * from cards and fingertips, the copyable {@link handsim.cards.sim.SimState} (checkpoints restore
+ * it bit for bit), bone control, configs/cards readers, and {@link handsim.cards.sim.Simulator},
+ * implicit Euler as an incremental potential minimised by projected Newton. Imports the other
+ * {@code handsim.cards} packages and {@code handsim.config}.
+ */
+package handsim.cards.sim;

@@ -1,0 +1,52 @@
+package handsim.cards.sleight;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.cards.sim.CardsConfig;
+import handsim.config.Json;
+import java.nio.file.Path;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A reduced Card Snapping trial (coarse 7 x 5 x 5 fingertips, 0.3 s): the hold keeps both
+ * cards, the run never lets surfaces touch, and the slide is what turns the cards apart.
+ */
+class SnapTrialTest {
+
+    static SnapTrial reducedTrial() {
+        Path dir = Path.of("configs/cards");
+        Json snap = Json.load(dir.resolve("snap.json"));
+        Json reduced = Json.of("snap.json (reduced)", Json.withOverrides("snap.json", snap.node(),
+                Map.of("trial.duration", "0.3", "params.t3", "0.25", "fingertip.mesh", "\"coarse\"", "fingertip.softLayers", "1")));
+        return new SnapTrial(SnapConfig.parse(reduced, null), CardsConfig.materials(dir.resolve("materials.json"), null),
+                CardsConfig.solver(dir.resolve("solver.json")));
+    }
+
+    @Test
+    void slidingTheFingertipsApartTurnsTheCardsAndNothingInterpenetrates() {
+        SnapTrial trial = reducedTrial();
+        // without a slide the scene is symmetric under the half-turn about the cards' long axis
+        // that swaps thumb and finger, so the cards stay aligned (α ≈ 0)
+        SnapResult still = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0));
+        // opposite slides drag the two cards' tops apart: each card turns about its pinch
+        SnapResult slid = trial.run(new SnapParams(0, 0.05, 0.001, 0.05, 0.2, 0.04));
+        for (SnapResult r : new SnapResult[] {still, slid}) {
+            assertTrue(r.minGap() > 0, "minimum gap " + r.minGap());
+            assertEquals(30, r.steps());
+            assertEquals(Math.abs(trial.scene().config().alphaTargetDegrees() - r.alphaEnd()), r.objective(), 1e-12);
+        }
+        assertTrue(still.alphaEnd() < 1, "aligned without a slide: α = " + still.alphaEnd());
+        assertTrue(slid.alphaEnd() > still.alphaEnd() + 2, "slide turns the cards: α = " + slid.alphaEnd());
+    }
+
+    @Test
+    void inconsistentWindowsAreRefusedByName() {
+        SnapTrial trial = reducedTrial();
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> trial.run(new SnapParams(0.1, 0.05, 0.001, 0.05, 0.2, 0.04)));
+        assertTrue(e.getMessage().startsWith("t1 must be > t0"), e.getMessage());
+    }
+}
