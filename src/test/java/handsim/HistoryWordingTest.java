@@ -17,6 +17,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.Test;
  * {@code readme-sample.md} beside it: lines of a README that narrated its history, each of which
  * must be flagged.
  */
+@Tag("slow")
 class HistoryWordingTest {
 
     static final String PATTERNS = "src/test/resources/history-wording/patterns.txt";

@@ -57,14 +57,14 @@ public final class TestSupport {
     }
 
     /** Height task environments over the shipped configs, with actions mapped onto {@code space}. */
-    public static handsim.train.ThrowEnvs heightEnvs(handsim.control.ThrowSpace space) {
+    public static handsim.train.ThrowEnvFactory heightEnvs(handsim.control.ThrowSpace space) {
         return heightEnvs(space, false);
     }
 
     /** The same, ending an episode at the first throw that misses its goal when {@code endAtFailedThrow}. */
-    public static handsim.train.ThrowEnvs heightEnvs(handsim.control.ThrowSpace space, boolean endAtFailedThrow) {
+    public static handsim.train.ThrowEnvFactory heightEnvs(handsim.control.ThrowSpace space, boolean endAtFailedThrow) {
         handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
-        return new handsim.train.ThrowEnvs("height", object("sphere"), () -> heightTask(null), cc,
+        return new handsim.train.ThrowEnvFactory("height", object("sphere"), () -> heightTask(null), cc,
                 handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), space,
                 new handsim.train.ThrowEnv.Settings(5, -1, handsim.train.SpinShaping.NONE, endAtFailedThrow),
@@ -80,13 +80,13 @@ public final class TestSupport {
      * The viewer's catch-and-throw loop of the height task (goal 1.2 m) with the nominal
      * controller and {@code object}, from the episode of {@code seed}, on {@code sim} (the scene owns it).
      */
-    public static handsim.task.CatchLoopScene heightLoopScene(handsim.sim.Simulator sim, String object, long seed) {
+    public static handsim.scene.CatchLoopScene heightLoopScene(handsim.sim.Simulator sim, String object, long seed) {
         handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
-        handsim.task.CatchEvaluation evaluation = handsim.task.CatchEvaluation.nominal(cc,
+        handsim.evaluation.CatchEvaluation evaluation = handsim.evaluation.CatchEvaluation.nominal(cc,
                 handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), object(object),
                 heightTask(handsim.task.HeightGoals.fixed(1.2)));
-        return new handsim.task.CatchLoopScene(sim, evaluation, seed, new handsim.task.HeightControl(0.05, 0.8, 1.7));
+        return new handsim.scene.CatchLoopScene(sim, evaluation, seed, new handsim.scene.HeightControl(0.05, 0.8, 1.7));
     }
 
     /** Uniform random joint angles inside the limits, shrunk by {@code margin} rad on each side. */

@@ -11,10 +11,12 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.sim.StepAccounting;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
-import handsim.task.HeldBallScenario;
+import handsim.task.HeightTask;
+import handsim.task.Tasks;
+import handsim.scene.HeldBallScenario;
 import handsim.task.ServoLoop;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
@@ -24,6 +26,7 @@ import java.util.concurrent.BrokenBarrierException;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CyclicBarrier;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -38,6 +41,9 @@ import picocli.CommandLine.Option;
                 + "controller, IK) and bytes allocated per step, on full catch-throw loops of the nominal controller "
                 + "(default) or on the arm holding a ball; --workers N runs N loops in parallel and reports the speed-up.")
 final class BenchCommand implements Callable<Integer> {
+
+    @Mixin
+    EpisodeOptions episodeOptions;
 
     @Option(names = "--scenario", defaultValue = "loop",
             description = "loop (catch-throw loops of the nominal controller) or held-ball (default: ${DEFAULT-VALUE})")
@@ -59,15 +65,9 @@ final class BenchCommand implements Callable<Integer> {
             description = "quickStep iterations (default: configs/sim.json)")
     Integer iterations;
 
-    @Option(names = "--object", defaultValue = "sphere", description = "thrown object of the loop scenario (default: ${DEFAULT-VALUE})")
-    String object;
-
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
             description = "desired apex height of every throw of the loop scenario (m, world; default: ${DEFAULT-VALUE})")
     double throwHeight;
-
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode of worker 0 (default: ${DEFAULT-VALUE})")
-    long seed;
 
     @Option(names = "--json", paramLabel = "FILE", description = "write the figures as JSON")
     Path json;
@@ -96,18 +96,18 @@ final class BenchCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
-        if (!(throwHeight > HeightGoals.LOWEST && throwHeight < HeightGoals.HIGHEST)) {
-            throw new IllegalArgumentException("--throw-height must be in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST
-                    + ") m, got " + throwHeight);
+        HeightTask.Config height = Tasks.heightConfig();
+        if (!height.allowsGoal(throwHeight)) {
+            throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }
         if (iterations != null && (iterations < 1 || iterations > 1000)) {
             throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
         }
         new OutputPaths().file("--json", json).check();
-        HandModel model = Runtime.model(null);
-        SimConfig base = Runtime.simConfig();
+        HandModel model = Wiring.model(null);
+        SimConfig base = Wiring.simConfig();
         SimConfig config = iterations != null ? base.withSolverIterations(iterations) : base;
-        ObjectSpec thrown = Runtime.object(scenario.equals("held-ball") ? "sphere" : object);
+        ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
 
         System.out.printf("bench %s: %d worker%s, %.0f s warm-up + %.0f s measured per worker, h = %.1f ms, "
                 + "quickStep iterations %d%n", scenario, workers, workers > 1 ? "s" : "", warmup, seconds,
@@ -175,20 +175,20 @@ final class BenchCommand implements Callable<Integer> {
                 sampler.start();
             }
         });
-        try (Rollouts rollouts = Runtime.rollouts(model, config, n)) {
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, config, n)) {
             return rollouts.run(n, sim -> worker -> {
                 if (sampler != null) {
                     sampler.register();
                 }
                 return scenario.equals("held-ball") ? heldBall(sim, model, thrown, measuredStart)
-                        : loops(sim, thrown, seed + worker * WORKER_SEED_STRIDE, measuredStart);
+                        : loops(sim, thrown, episodeOptions.seed + worker * WORKER_SEED_STRIDE, measuredStart);
             });
         }
     }
 
     /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
     private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
-        CatchEvaluation evaluation = Runtime.nominalEvaluation(object, Runtime.heightTask(HeightGoals.fixed(throwHeight)));
+        CatchEvaluation evaluation = Wiring.nominalEvaluation(episodeOptions.object, Wiring.heightTask(HeightGoals.fixed(throwHeight)));
         long warmSteps = Math.round(warmup / sim.config().timeStep());
         long measuredSteps = Math.round(seconds / sim.config().timeStep());
         long s = firstSeed;
@@ -208,7 +208,7 @@ final class BenchCommand implements Callable<Integer> {
                 return meter.finish(done, episodes, caught, firstCatches, false, Double.NaN);
             }
             long before = sim.stepCount();
-            var loop = episode.tick();
+            var loop = evaluation.tick(episode, s);
             done += sim.stepCount() - before;
             if (loop != null && loop.caught()) {
                 caught++;
@@ -223,7 +223,7 @@ final class BenchCommand implements Callable<Integer> {
 
     /** The arm holds the ball thrown into its palm: the foundation's benchmark. */
     private Run heldBall(Simulator sim, HandModel model, ObjectSpec ball, CyclicBarrier start) {
-        HeldBallScenario scenario = new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), ball, 0.2, 1);
+        HeldBallScenario scenario = new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), ball, 0.2, 1);
         long warmSteps = Math.max(Math.round(warmup / sim.config().timeStep()), Math.round(1.0 / sim.config().timeStep()));
         long measuredSteps = Math.round(seconds / sim.config().timeStep());
         for (long i = 0; i < warmSteps; i++) {

@@ -5,9 +5,10 @@ import handsim.config.Json;
 import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
 import handsim.sim.SimConfig;
+import handsim.sim.Simulator;
 import handsim.train.DaggerRun;
 import handsim.train.DaggerRunConfig;
-import handsim.train.ThrowEnvs;
+import handsim.train.ThrowEnvFactory;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -55,21 +56,21 @@ final class DaggerCommand implements Callable<Integer> {
         }
         Json file = resume == null ? TrainCommand.withOverrides(config, overrides) : null;
         DaggerRunConfig c = resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(resume);
-        HandModel model = Runtime.model(null);
-        SimConfig simConfig = Runtime.simConfig();
-        ThrowEnvs envs = TrainCommand.environments(c.run(), model);
-        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
-            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Runtime::twinSimulator) : started(file, c, envs, rollouts);
+        HandModel model = Wiring.model(null);
+        SimConfig simConfig = Wiring.simConfig();
+        ThrowEnvFactory envs = TrainCommand.environments(c.run(), model);
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
+            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Wiring::twinSimulator) : started(file, c, envs, rollouts);
             run.run(System.out);
         }
         return 0;
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */
-    private DaggerRun started(Json file, DaggerRunConfig c, ThrowEnvs envs, Rollouts rollouts) throws IOException {
+    private DaggerRun started(Json file, DaggerRunConfig c, ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
         Path dir = RunFolders.claim(runs, "--runs", "dagger", c.run().name(), c.learner().seed());
         try {
-            return DaggerRun.start(dir, file, envs, rollouts, Runtime::twinSimulator, provenance(c), initActor);
+            return DaggerRun.start(dir, file, envs, rollouts, Wiring::twinSimulator, provenance(c), initActor);
         } catch (IOException | RuntimeException e) {
             RunFolders.release(dir);
             throw e;

@@ -6,13 +6,14 @@ import handsim.config.Home;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeLimits;
 import handsim.task.HeightGoals;
+import handsim.task.Tasks;
 import handsim.task.HeightTask;
 import handsim.task.LoopRecord;
-import handsim.task.SceneSetup;
+import handsim.scene.SceneSetup;
 import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -22,6 +23,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -39,14 +41,11 @@ import picocli.CommandLine.Option;
                 + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder.")
 final class DemoCommand implements Callable<Integer> {
 
+    @Mixin
+    EpisodeOptions episodeOptions;
+
     @Option(names = "--loops", defaultValue = "20", description = "throws to make when headless (default: ${DEFAULT-VALUE})")
     int loops;
-
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode (default: ${DEFAULT-VALUE})")
-    long seed;
-
-    @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (default: ${DEFAULT-VALUE})")
-    String object;
 
     @Option(names = "--heights", paramLabel = "LOW:HIGH",
             description = "range of the random apex goals, m (default: the height task's trained range, configs/tasks/height.json)")
@@ -89,6 +88,8 @@ final class DemoCommand implements Callable<Integer> {
         if (export != null && !headless && ViewerSession.hasDisplay()) {
             throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
         }
+        String object = episodeOptions.object;
+        long seed = episodeOptions.seed;
         if (FlipDemo.flips(object)) {
             if (heights != null) {
                 throw new IllegalArgumentException("--heights goes with the height demo (a sphere or cuboid), not with a " + object
@@ -106,23 +107,23 @@ final class DemoCommand implements Callable<Integer> {
                     : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
             return 0;
         }
-        HeightGoals goals = heights != null ? parseHeights(heights) : Runtime.heightTask(null).goals();
+        HeightGoals goals = heights != null ? parseHeights(heights) : Wiring.heightTask(null).goals();
         String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", object, controller, seed), goals, null, false, 0, null);
+            return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals, null, false, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        HeightTask task = Runtime.heightTask(goals);
-        EpisodeLimits limits = Runtime.episodeLimits();
-        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), limits, Runtime.launches(),
-                Runtime.object(object), task, controller.equals("learned")
-                        ? ThrowPolicyFile.load(shippedPolicy(object)).forTask(task, Runtime.object(object)) : obs -> task.nominalThrow());
-        Path dir = out != null ? RunFolders.claimGiven("--out", out) : RunFolders.claim(runs, "--runs", "demo", object, seed);
+        HeightTask task = Wiring.heightTask(goals);
+        EpisodeLimits limits = Wiring.episodeLimits();
+        CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), limits, Wiring.launches(),
+                Wiring.object(episodeOptions.object), task, controller.equals("learned")
+                        ? ThrowPolicyFile.load(shippedPolicy(episodeOptions.object)).forTask(task, Wiring.object(episodeOptions.object)) : obs -> task.nominalThrow());
+        Path dir = out != null ? RunFolders.claimGiven("--out", out) : RunFolders.claim(runs, "--runs", "demo", episodeOptions.object, episodeOptions.seed);
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
-                ? " (" + Home.root().relativize(shippedPolicy(object)) + ")" : "", goals.low(), goals.high());
+                ? " (" + Home.root().relativize(shippedPolicy(episodeOptions.object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
         try {
             run(evaluation, limits, goals, dir, exported);
@@ -143,12 +144,12 @@ final class DemoCommand implements Callable<Integer> {
         List<Long> throwSeeds = new ArrayList<>();
         int episodes = 0, firstCatchMisses = 0, failedInARow = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Runtime.simulator(Runtime.model(null), Runtime.simConfig())) {
-            for (long s = seed; throwsMade.size() < loops; s++) {
+        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
+            for (long s = episodeOptions.seed; throwsMade.size() < loops; s++) {
                 if (failedInARow == limits.maxFailedThrowIns()) {
                     throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch "
                             + "(seeds " + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), "
-                            + throwsMade.size() + " of " + loops + " throws made: is the " + object + " one a hand can catch?");
+                            + throwsMade.size() + " of " + loops + " throws made: is the " + episodeOptions.object + " one a hand can catch?");
                 }
                 episodes++;
                 boolean caughtIn = false;
@@ -178,7 +179,7 @@ final class DemoCommand implements Callable<Integer> {
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
         if (exported != null) {
-            exported.write("handsim demo: height task, " + object + ", " + controllerShown + " controller, seed " + seed);
+            exported.write("handsim demo: height task, " + episodeOptions.object + ", " + controllerShown + " controller, seed " + episodeOptions.seed);
         }
     }
 
@@ -203,8 +204,8 @@ final class DemoCommand implements Callable<Integer> {
         ObjectNode summary = JsonNodeFactory.instance.objectNode();
         summary.put("command", "demo");
         summary.put("controller", controllerShown);
-        summary.put("object", object);
-        summary.put("seed", seed);
+        summary.put("object", episodeOptions.object);
+        summary.put("seed", episodeOptions.seed);
         summary.put("heights_low_m", goals.low());
         summary.put("heights_high_m", goals.high());
         summary.put("throws", n);
@@ -217,7 +218,7 @@ final class DemoCommand implements Callable<Integer> {
         summary.put("wall_s", wall);
         Outputs.writeJson(dir.resolve("summary.json"), summary);
         Outputs.writeString(dir.resolve("loops.csv"), csv.toString());
-        new Plot("Apex height per throw (" + object + ", " + controllerShown + " controller)", "throw", "height (m)")
+        new Plot("Apex height per throw (" + episodeOptions.object + ", " + controllerShown + " controller)", "throw", "height (m)")
                 .add("goal", index, goal, Plot.RED, Plot.Style.POINTS)
                 .add("apex reached", index, apex, Plot.BLUE, Plot.Style.LINE_POINTS)
                 .writePng(dir.resolve("apex.png"));
@@ -229,14 +230,15 @@ final class DemoCommand implements Callable<Integer> {
     /** {@code LOW:HIGH} in metres, for {@code --heights}. */
     static HeightGoals parseHeights(String text) {
         String[] parts = text.split(":");
+        HeightTask.Config height = Tasks.heightConfig();
         try {
-            if (parts.length == 2) {
+            if (parts.length == 2 && height.allowsGoal(Double.parseDouble(parts[0])) && height.allowsGoal(Double.parseDouble(parts[1]))) {
                 return new HeightGoals(Double.parseDouble(parts[0]), Double.parseDouble(parts[1]));
             }
         } catch (IllegalArgumentException e) {
-            // not numbers, or out of range: the message below
+            // not numbers, or LOW above HIGH: the message below
         }
-        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with " + HeightGoals.LOWEST + " < LOW <= HIGH < "
-                + HeightGoals.HIGHEST + ", got \"" + text + "\"");
+        throw new IllegalArgumentException("--heights must be LOW:HIGH in metres with " + height.lowestGoal() + " < LOW <= HIGH < "
+                + height.highestGoal() + ", got \"" + text + "\"");
     }
 }

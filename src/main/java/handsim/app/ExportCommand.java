@@ -4,7 +4,7 @@ import handsim.export.ExportOptions;
 import handsim.export.ExportTarget;
 import handsim.export.MotionClip;
 import handsim.export.MotionRecorder;
-import handsim.task.Scene;
+import handsim.scene.Scene;
 import handsim.viewer.Camera;
 import handsim.viewer.ExportLook;
 import handsim.viewer.ViewerConfig;

@@ -8,7 +8,7 @@ import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.FlipTask;
 import handsim.task.LoopRecord;
@@ -44,7 +44,7 @@ final class FlipDemo {
     /** The objects the demo flips: those the flip task has settings for. */
     static boolean flips(String object) {
         try {
-            Runtime.tasks().create("flip", object);
+            Wiring.tasks().create("flip", object);
             return true;
         } catch (IllegalArgumentException e) {
             return false;
@@ -59,13 +59,13 @@ final class FlipDemo {
 
     /** Runs the throws, printing each, and writes the run folder {@code dir}; {@code exported} (or null) watches every tick. */
     void run(Path dir, RunExport exported) throws IOException {
-        FlipTask task = (FlipTask) Runtime.tasks().create("flip", object);
-        ObjectSpec spec = Runtime.object(object);
+        FlipTask task = (FlipTask) Wiring.tasks().create("flip", object);
+        ObjectSpec spec = Wiring.object(object);
         Path policy = shippedPolicy(object);
         ThrowPolicy throwing = policy == null ? obs -> task.nominalThrow()
-                : ThrowPolicyFile.load(policy).forTask(task, spec, StateVector.Hand.of(Runtime.model(null)));
+                : ThrowPolicyFile.load(policy).forTask(task, spec, StateVector.Hand.of(Wiring.model(null)));
         String controller = policy == null ? "nominal" : "learned";
-        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(), spec,
+        CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(), spec,
                 task, throwing);
         System.out.printf("handsim demo: flip task, %s, the %s controller%s%n", object, controller,
                 policy == null ? " (no flip policy ships for a " + object + ")" : " (" + Home.root().relativize(policy) + ", alone)");
@@ -73,12 +73,12 @@ final class FlipDemo {
         List<Long> seeds = new ArrayList<>();
         int episodes = 0, inARow = 0, longest = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Runtime.simulator(Runtime.model(null), Runtime.simConfig())) {
+        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
             for (long s = seed; made.size() < throwsWanted; s++) {
                 episodes++;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
                 while (episode.status() == CatchThrowEpisode.Status.RUNNING && made.size() < throwsWanted) {
-                    LoopRecord r = episode.tick();
+                    LoopRecord r = evaluation.tick(episode, s);
                     if (exported != null) {
                         exported.afterTick(sim);
                     }

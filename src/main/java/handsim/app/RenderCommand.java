@@ -1,7 +1,7 @@
 package handsim.app;
 
 import handsim.task.Goal;
-import handsim.task.Scene;
+import handsim.scene.Scene;
 import handsim.viewer.Camera;
 import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;

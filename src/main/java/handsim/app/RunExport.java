@@ -3,7 +3,7 @@ package handsim.app;
 import handsim.export.ExportTarget;
 import handsim.export.MotionRecorder;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.Goal;
 import handsim.viewer.Camera;
 import handsim.viewer.ExportLook;

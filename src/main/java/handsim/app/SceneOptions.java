@@ -1,18 +1,20 @@
 package handsim.app;
 
 import handsim.model.HandModel;
+import handsim.scene.HeldBallScenario;
+import handsim.scene.HeldBallScene;
+import handsim.scene.InteractiveScene;
+import handsim.scene.Scene;
+import handsim.scene.SceneSetup;
+import handsim.scene.SwitchingScene;
 import handsim.sim.Simulator;
 import handsim.task.Goal;
 import handsim.task.HeightGoals;
-import handsim.task.HeldBallScenario;
-import handsim.task.HeldBallScene;
-import handsim.task.InteractiveScene;
-import handsim.task.Scene;
-import handsim.task.SceneSetup;
+import handsim.task.HeightTask;
 import handsim.task.ServoLoop;
-import handsim.task.SwitchingScene;
+import handsim.task.Tasks;
 import handsim.viewer.ViewerConfig;
-import java.nio.file.Path;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -24,54 +26,42 @@ import picocli.CommandLine.Option;
  */
 final class SceneOptions {
 
+    @Mixin
+    ControllerOptions who;
+
+    @Mixin
+    EpisodeOptions episodeOptions;
+
     @Option(names = "--seconds", paramLabel = "S", defaultValue = "2", description = "simulated seconds (default: ${DEFAULT-VALUE})")
     double seconds;
-
-    @Option(names = "--seed", defaultValue = "1", description = "seed (default: ${DEFAULT-VALUE})")
-    long seed;
-
-    @Option(names = "--task", description = "height, box or flip: that task's catch-and-throw loop instead of "
-            + "the held ball (default with --controller: height)")
-    String task;
-
-    @Option(names = "--controller", description = "nominal or learned: the catch-and-throw loop instead of the "
-            + "held ball (default with --task: nominal)")
-    String controller;
-
-    @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file (default: the "
-            + "policy shipped for the task and object)")
-    Path policy;
-
-    @Option(names = "--plan", description = "flip: a throw planner chooses every throw, trying the controller's and variations "
-            + "of it in a twin world first (configs/planner.json)")
-    boolean plan;
-
-    @Option(names = "--object", defaultValue = "sphere", description = "with --task or --controller: sphere, can, cuboid or club")
-    String object;
 
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
 
-    /** Refuses a duration out of (0, 600] s. */
+    /** Refuses a duration out of (0, 600] s and a goal height the height task does not allow. */
     void validate() {
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
+        }
+        HeightTask.Config height = Tasks.heightConfig();
+        if (!height.allowsGoal(throwHeight)) {
+            throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }
     }
 
     /** The scene asked for; {@code command} names the command in the notes printed. */
     Scene open(String command, ViewerConfig viewerConfig) {
-        if (controller == null && task == null && !plan) {
-            if (!object.equals("sphere")) {
+        if (!who.given()) {
+            if (!episodeOptions.object.equals("sphere")) {
                 throw new IllegalArgumentException("--object goes with --task or --controller (the held ball is a sphere), got "
-                        + object);
+                        + episodeOptions.object);
             }
-            HandModel model = Runtime.model(null);
-            Simulator sim = Runtime.simulator(model, Runtime.simConfig());
-            return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Runtime.pd(model)), Runtime.object("sphere"), 0.2, seed));
+            HandModel model = Wiring.model(null);
+            Simulator sim = Wiring.simulator(model, Wiring.simConfig());
+            return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), Wiring.object("sphere"), 0.2, episodeOptions.seed));
         }
-        SceneSetup wanted = new SceneSetup(task == null ? "height" : task, object, controller == null ? "nominal" : controller, seed);
-        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), policy, plan, viewerConfig);
+        SceneSetup wanted = new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed);
+        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), who.policy, who.plan, viewerConfig);
         System.out.println("handsim " + command + ": " + describe(scene));
         return scene;
     }

@@ -6,16 +6,17 @@ import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.config.ConfigException;
 import handsim.control.ThrowPolicy;
-import handsim.task.CatchEvaluation;
-import handsim.task.CatchLoopScene;
+import handsim.evaluation.CatchEvaluation;
+import handsim.scene.CatchLoopScene;
+import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.InteractiveScene;
-import handsim.task.SceneCatalog;
-import handsim.task.SceneSetup;
+import handsim.scene.InteractiveScene;
+import handsim.scene.SceneCatalog;
+import handsim.scene.SceneSetup;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -38,8 +39,8 @@ final class ShippedScenes implements SceneCatalog {
     static final List<String> TASKS = List.of("height", "box", "flip");
     static final List<String> CONTROLLERS = List.of("nominal", "learned");
 
-    private final HandModel model = Runtime.model(null);
-    private final SimConfig simConfig = Runtime.simConfig();
+    private final HandModel model = Wiring.model(null);
+    private final SimConfig simConfig = Wiring.simConfig();
     private final HeightGoals goals;
     private final HeightControl heightControl;
     private final Path policy;
@@ -49,7 +50,7 @@ final class ShippedScenes implements SceneCatalog {
     /**
      * {@code goals} are shared by every scene opened (moving the goal survives a switch of
      * object); {@code policy} is the learned controller's file, or null; with {@code plan} a
-     * {@link handsim.task.ThrowPlanner} chooses the flip task's throws.
+     * {@link handsim.evaluation.ThrowPlanner} chooses the flip task's throws.
      */
     ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, boolean plan) {
         this.goals = goals;
@@ -114,11 +115,11 @@ final class ShippedScenes implements SceneCatalog {
         }
         ThrowTask task;
         try {
-            task = shown.task().equals("height") ? Runtime.heightTask(goals) : Runtime.tasks().create(shown.task(), shown.object());
+            task = shown.task().equals("height") ? Wiring.heightTask(goals) : Wiring.tasks().create(shown.task(), shown.object());
         } catch (IllegalArgumentException | ConfigException e) {
             notes.add(e.getMessage() + ": showing the height task");
             shown = shown.withTask("height");
-            task = Runtime.heightTask(goals);
+            task = Wiring.heightTask(goals);
         }
         ThrowTask chosen = task;
         ThrowPolicy throwPolicy = obs -> chosen.nominalThrow();
@@ -130,15 +131,15 @@ final class ShippedScenes implements SceneCatalog {
                 shown = shown.withController("nominal");
             }
         }
-        CatchEvaluation evaluation = new CatchEvaluation(Runtime.controllerConfig(), Runtime.episodeLimits(), Runtime.launches(),
-                Runtime.object(shown.object()), task, throwPolicy);
-        Simulator sim = Runtime.simulator(model, simConfig);
+        CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(),
+                Wiring.object(shown.object()), task, throwPolicy);
+        Simulator sim = Wiring.simulator(model, simConfig);
         Simulator twin = null;
         if (plan && task.goalSize() != 0) {
             notes.add("the throw planner chooses the flip task's throws only: the " + task.name() + " task's are not planned");
         } else if (plan) {
-            twin = Runtime.twinSimulator(sim);
-            evaluation = evaluation.planned(Runtime.plannerConfig(shown.object()), twin);
+            twin = Wiring.twinSimulator(sim);
+            evaluation = evaluation.planned(Wiring.plannerConfig(shown.object()), twin);
         }
         InteractiveScene scene = new CatchLoopScene(sim, evaluation, shown.seed(), heightControl, twin);
         return new Opened(scene, shown, notes);
@@ -161,8 +162,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.load(file).forTask(task, Runtime.object(setup.object()),
-                    handsim.task.StateVector.Hand.of(Runtime.model(null)));
+            return ThrowPolicyFile.load(file).forTask(task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
@@ -11,7 +13,7 @@ import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowEnv;
-import handsim.train.ThrowEnvs;
+import handsim.train.ThrowEnvFactory;
 import handsim.train.TrainConfig;
 import handsim.train.TrainRun;
 import java.io.IOException;
@@ -97,10 +99,10 @@ final class TrainCommand implements Callable<Integer> {
                     + "with --set training.episodes=N");
         }
         TrainConfig c = resume == null ? load(config, overrides) : TrainRun.savedConfig(resume);
-        HandModel model = Runtime.model(null);
-        SimConfig simConfig = Runtime.simConfig();
-        ThrowEnvs envs = environments(c.run(), model);
-        try (Rollouts rollouts = Runtime.rollouts(model, simConfig, c.run().workers())) {
+        HandModel model = Wiring.model(null);
+        SimConfig simConfig = Wiring.simConfig();
+        ThrowEnvFactory envs = environments(c.run(), model);
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
             TrainRun run = resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
             tellLauncher(run.dir());
             run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
@@ -135,19 +137,19 @@ final class TrainCommand implements Callable<Integer> {
     }
 
     /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
-    static ThrowEnvs environments(TrainConfig.Run run, HandModel model) {
-        Tasks tasks = Runtime.tasks();
+    static ThrowEnvFactory environments(TrainConfig.Run run, HandModel model) {
+        Tasks tasks = Wiring.tasks();
         ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
-        ControllerConfig cc = Runtime.controllerConfig();
-        ObjectSpec object = Runtime.object(run.object());
-        return new ThrowEnvs(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
-                Runtime.episodeLimits(), Runtime.launches(), probe.throwSpace(cc.throwSpace()),
+        ControllerConfig cc = Wiring.controllerConfig();
+        ObjectSpec object = Wiring.object(run.object());
+        return new ThrowEnvFactory(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
+                Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
                 new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */
-    private TrainRun started(TrainConfig c, ThrowEnvs envs, Rollouts rollouts) throws IOException {
+    private TrainRun started(TrainConfig c, ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
         Path dir = RunFolders.claim(runs, "--runs", c.run().task(), c.run().name(), c.learner().seed());
         try {
             return TrainRun.start(dir, c, envs, rollouts, provenance(c), initActor);
@@ -158,7 +160,7 @@ final class TrainCommand implements Callable<Integer> {
     }
 
     /** The run of --resume, its budget raised to --episodes if given (recorded only once it can go on). */
-    private TrainRun resumed(ThrowEnvs envs, Rollouts rollouts) throws IOException {
+    private TrainRun resumed(ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
         TrainRun run = TrainRun.resume(resume, envs, rollouts, fromSnapshot, note -> System.out.println("handsim train: " + note));
         return episodes != null ? run.extendedTo(episodes, extension()) : run;
     }
@@ -187,7 +189,7 @@ final class TrainCommand implements Callable<Integer> {
         p.put("commit", Provenance.gitCommit());
         p.put("started", LocalDateTime.now().toString());
         p.put("java", System.getProperty("java.version"));
-        p.put("cores", java.lang.Runtime.getRuntime().availableProcessors());
+        p.put("cores", Runtime.getRuntime().availableProcessors());
         return p;
     }
 }

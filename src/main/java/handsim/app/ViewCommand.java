@@ -1,10 +1,11 @@
 package handsim.app;
 
 import handsim.task.HeightGoals;
-import handsim.task.SceneSetup;
+import handsim.scene.SceneSetup;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -16,26 +17,12 @@ import picocli.CommandLine.Option;
                 + "and the controller with keys (H lists them). Needs an X display.")
 final class ViewCommand implements Callable<Integer> {
 
-    @Option(names = "--task", defaultValue = "height", description = "height, box or flip (default: ${DEFAULT-VALUE}; "
-            + "tasks not built yet fall back to height, with a note)")
-    String task;
+    /** Lenient here: an unknown task falls back to height, a learned controller without a usable policy to nominal, with a note. */
+    @Mixin
+    ControllerOptions who;
 
-    @Option(names = "--object", defaultValue = "sphere", description = "sphere, can, cuboid or club (default: ${DEFAULT-VALUE})")
-    String object;
-
-    @Option(names = "--controller", defaultValue = "nominal", description = "nominal or learned (default: ${DEFAULT-VALUE}; "
-            + "learned without a usable --policy falls back to nominal, with a note)")
-    String controller;
-
-    @Option(names = "--policy", paramLabel = "FILE", description = "the learned controller's policy file")
-    Path policy;
-
-    @Option(names = "--plan", description = "flip: a throw planner chooses every throw, trying the controller's and variations "
-            + "of it in a twin world first (configs/planner.json); the scene pauses while it plans")
-    boolean plan;
-
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the first episode (default: ${DEFAULT-VALUE})")
-    long seed;
+    @Mixin
+    EpisodeOptions episodeOptions;
 
     @Option(names = "--heights", paramLabel = "LOW:HIGH", defaultValue = "1.1:1.3",
             description = "range of the random apex goals, m (default: ${DEFAULT-VALUE}); Up / Down move it")
@@ -69,6 +56,7 @@ final class ViewCommand implements Callable<Integer> {
         }
         HeightGoals goals = DemoCommand.parseHeights(heights);
         new OutputPaths().file("--screenshot", screenshot).check();
-        return ViewerSession.open("view", new SceneSetup(task, object, controller, seed), goals, policy, plan, benchmarkFrames, screenshot);
+        return ViewerSession.open("view", new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed), goals,
+                who.policy, who.plan, benchmarkFrames, screenshot);
     }
 }

@@ -1,12 +1,12 @@
 package handsim.app;
 
 import handsim.config.Home;
-import handsim.live.LiveRun;
-import handsim.live.SimClock;
-import handsim.task.HeightControl;
+import handsim.scene.LiveRun;
+import handsim.scene.SimClock;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.SceneSetup;
-import handsim.task.SwitchingScene;
+import handsim.scene.SceneSetup;
+import handsim.scene.SwitchingScene;
 import handsim.viewer.Viewer;
 import handsim.viewer.ViewerConfig;
 import java.nio.file.Path;
@@ -87,7 +87,7 @@ final class ViewerSession {
                 System.out.printf(Locale.ROOT, "%sbenchmark: %d frames in %.2f s after a %.1f s warm-up: mean %.1f FPS; "
                         + "real-time factor %.3f (%.2f simulated s, h = %.1f ms); %dx%d, %s%n", prefix, stats.frames(),
                         stats.wallSeconds(), warmup, stats.fps(), stats.realTimeFactor(), stats.simSeconds(),
-                        Runtime.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
+                        Wiring.simConfig().timeStep() * 1e3, size[0], size[1], viewer.glRenderer());
             }
         }
         return 0;

@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
@@ -10,7 +12,7 @@ import handsim.model.HandModel;
 import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.task.Tasks;
-import handsim.train.ThrowEnvs;
+import handsim.train.ThrowEnvFactory;
 import handsim.train.Warmstart;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -41,9 +43,9 @@ final class WarmstartCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         Warmstart.Config c = Warmstart.Config.load(config);
-        HandModel model = Runtime.model(null);
-        ThrowEnvs envs = TrainCommand.environments(c.train().run(), model);
-        Tasks tasks = Runtime.tasks();
+        HandModel model = Wiring.model(null);
+        ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), model);
+        Tasks tasks = Wiring.tasks();
         double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
         Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
@@ -56,7 +58,7 @@ final class WarmstartCommand implements Callable<Integer> {
                 + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
                 c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());
         List<Warmstart.Search> searches;
-        try (Rollouts rollouts = Runtime.rollouts(model, Runtime.simConfig(), c.train().run().workers())) {
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, Wiring.simConfig(), c.train().run().workers())) {
             searches = Warmstart.search(c, envs, nominal, rollouts, System.out);
         }
         ArrayNode all = Json.mapper().createArrayNode();

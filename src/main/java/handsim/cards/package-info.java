@@ -5,5 +5,8 @@
  * and sparse algebra), {@code mesh} (cards and fingertips), {@code energy} (elastic energies),
  * {@code contact} (barrier, friction, CCD), {@code sim} (scenes, state, implicit Euler), {@code
  * sleight} (Card Snapping). Nothing here imports ode4j, DL4J, LWJGL or picocli.
+ *
+ * <p>Its subpackages import each other, {@code handsim.config} (JSON configs) and {@code
+ * handsim.report} (charts, atomic files); nothing else of handsim.
  */
 package handsim.cards;

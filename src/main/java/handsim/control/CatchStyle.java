@@ -7,7 +7,7 @@ import handsim.config.Json;
  * by {@code planeShift}, the palm moving at {@code velocityFraction} of the object's velocity (the
  * paper's 70 %). The controller's own style is {@code (0, catch.velocityFraction)}; a task may
  * catch its thrown objects otherwise ({@link ControllerConfig#withCatchAfterThrow}), and a throw
- * planner may choose the catch of each throw ({@link ThrowPolicy#catchAfterThrow}).
+ * planner may choose the catch of each throw with it ({@link ThrowDecision}).
  *
  * @param planeShift metres above the configured interception plane (negative: below)
  * @param velocityFraction palm velocity at interception as a fraction of the object's

@@ -15,15 +15,15 @@ import java.util.Objects;
  * MIDDLE -> THROW -> GOBACK -> CATCH, timed by the elapsed time in each state; each state moves
  * the palm centre along a Hermite curve (eq. 1) with SLERP rotation, tracked by damped least
  * squares IK (eq. 2); the fingers follow the neutral / open / closed poses. The hand closes at
- * the first hand-object contact since CATCH began; THROW's curve comes from a {@link
- * ThrowPolicy}. Engine-free: it reads an {@link Observation} and its {@link ControllerState}.
+ * the first hand-object contact since CATCH began; THROW's curve comes from the {@link
+ * ThrowDecision} made when MIDDLE ends ({@link #throwDue}, {@link #beginThrow}). Engine-free: it
+ * reads an {@link Observation} and its {@link ControllerState}.
  */
 public final class NominalController {
 
     private final HandModel model;
     private final ControllerConfig config;
     private final ObjectSpec object;
-    private final ThrowPolicy throwPolicy;
     private final Kinematics kin;
     private final Site palm;
     private final DlsIk ik;
@@ -38,12 +38,10 @@ public final class NominalController {
      * @param object the object to catch; its name selects the grasp in {@code config}
      * @param gravity world gravity, for predicting the object's flight
      */
-    public NominalController(HandModel model, ControllerConfig config, ObjectSpec object, ThrowPolicy throwPolicy,
-            Vec3 gravity) {
+    public NominalController(HandModel model, ControllerConfig config, ObjectSpec object, Vec3 gravity) {
         this.model = model;
         this.config = config;
         this.object = object;
-        this.throwPolicy = throwPolicy;
         this.kin = new Kinematics(model);
         this.palm = model.site("palm_center");
         this.ik = new DlsIk(kin, palm, config.ik());
@@ -88,7 +86,7 @@ public final class NominalController {
         s.handPose = HandPose.NEUTRAL;
         s.weightsFrom[HandPose.NEUTRAL.ordinal()] = 1;
         System.arraycopy(obs.q(), 0, s.poseFrom, 0, s.poseFrom.length);
-        enter(Phase.CATCH, obs, s);
+        enter(Phase.CATCH, obs, s, null);
         update(obs, s);
         return s;
     }
@@ -96,8 +94,8 @@ public final class NominalController {
     /**
      * While THROW or GOBACK runs, before the coming catch is planned: that catch meets the object
      * as {@code style} says. Nothing the hand does before CATCH depends on it, so a planner can
-     * play one throw once and branch its catch here; a throw policy that named {@code style} when
-     * THROW began ({@link ThrowPolicy#catchAfterThrow}) makes the same catch.
+     * play one throw once and branch its catch here; a {@link ThrowDecision} that named {@code
+     * style} when THROW began makes the same catch.
      */
     public void meetComingCatchAs(ControllerState s, CatchStyle style) {
         if (s.phase != Phase.THROW && s.phase != Phase.GOBACK) {
@@ -107,15 +105,34 @@ public final class NominalController {
     }
 
     /**
-     * True when {@link #update} with this observation will end MIDDLE and begin a THROW, asking
-     * the throw policy for its parameters: the moment a learner decides (sec. 3.7).
+     * True when this observation ends MIDDLE and begins a THROW, whose parameters are then
+     * decided ({@link #beginThrow}): the moment a learner decides (sec. 3.7).
      */
     public boolean throwDue(Observation obs, ControllerState s) {
         return s.phase == Phase.MIDDLE && obs.time() - s.phaseStart >= duration(s);
     }
 
-    /** Advances the state machine to the observation's time and writes the new targets. */
+    /**
+     * Advances the state machine to the observation's time and writes the new targets. A throw
+     * due at this observation ({@link #throwDue}) is begun by {@link #beginThrow} instead.
+     */
     public void update(Observation obs, ControllerState s) {
+        if (throwDue(obs, s)) {
+            throw new IllegalStateException("a throw is due at t = " + obs.time() + " s: begin it with its decision (beginThrow)");
+        }
+        advance(obs, s, null);
+    }
+
+    /** At a throw's decision ({@link #throwDue}): ends MIDDLE and begins the THROW that {@code decision} says. */
+    public void beginThrow(Observation obs, ControllerState s, ThrowDecision decision) {
+        if (!throwDue(obs, s)) {
+            throw new IllegalStateException("no throw is due in " + s.phase + " at t = " + obs.time() + " s");
+        }
+        advance(obs, s, Objects.requireNonNull(decision, "decision"));
+    }
+
+    /** {@link #update} and {@link #beginThrow}: {@code decision} is the throw's when one begins, else null. */
+    private void advance(Observation obs, ControllerState s, ThrowDecision decision) {
         // the hand closes at the first hand-object contact since CATCH began (sec. 3.1)
         if (obs.handTouchedObject() && !s.closedOnContact && (s.phase == Phase.CATCH || s.phase == Phase.MIDDLE)) {
             s.closedOnContact = true;
@@ -123,7 +140,7 @@ public final class NominalController {
         }
         // state transitions on the elapsed time in the state (sec. 3.1, Fig. 3), or THROW's on the object's turn
         if (stateOver(obs, s)) {
-            enter(s.phase.next(), obs, s);
+            enter(s.phase.next(), obs, s, decision);
         } else if (s.phase == Phase.CATCH && !s.closedOnContact && leftPredictedFlight(obs, s)) {
             // the object did not fly as predicted (it bounced off the box): plan the catch again
             replanCatch(obs, s);
@@ -162,7 +179,7 @@ public final class NominalController {
     }
 
     /** Plans the curve of a new state from the hand's current position and velocity (sec. 3.6). */
-    private void enter(Phase phase, Observation obs, ControllerState s) {
+    private void enter(Phase phase, Observation obs, ControllerState s, ThrowDecision decision) {
         Vec3 p0 = obs.palm().origin();
         Vec3 v0 = obs.palmVelocity();
         Quat r0 = obs.palm().rotation();
@@ -178,9 +195,9 @@ public final class NominalController {
             case MIDDLE -> s.trajectory = new PalmTrajectory(new Hermite(p0, v0, neutralPalm.origin(), Vec3.ZERO,
                     config.middleDuration()), r0, neutralPalm.rotation());
             case THROW -> {
-                ThrowParameters p = throwPolicy.decide(obs);
+                ThrowParameters p = decision.throwing();
                 s.currentThrow = p;
-                s.catchStyle = throwPolicy.catchAfterThrow().or(config::catchAfterThrow).orElse(null);
+                s.catchStyle = decision.catching() != null ? decision.catching() : config.catchAfterThrow().orElse(null);
                 double tt = config.throwDuration();
                 Vec3 endVelocity = p.dOffset().times(config.throwEndSpeedFactor() / tt);
                 Quat end = Quat.fromRotationVector(p.rTarget()).mul(neutralPalm.rotation());

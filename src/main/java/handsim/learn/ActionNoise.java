@@ -1,6 +1,6 @@
 package handsim.learn;
 
-import handsim.learn.TrainingConfig.NoiseType;
+import handsim.learn.LearnerConfig.NoiseType;
 
 /**
  * Exploration for one episode: uniform random actions during warm-up, otherwise Gaussian or

@@ -24,7 +24,7 @@ public final class ActorPretraining {
      * observations, so the actor is fitted on the inputs it will see in DDPG. {@code seed}
      * fixes the split and the minibatch order.
      */
-    public static Result fit(DdpgAgent agent, double[][] observations, double[][] actions, TrainingConfig.Pretrain config,
+    public static Result fit(DdpgAgent agent, double[][] observations, double[][] actions, LearnerConfig.Pretrain config,
             long seed) {
         return fit(agent, observations, actions, null, config, seed);
     }
@@ -35,7 +35,7 @@ public final class ActorPretraining {
      * validation loss stays unweighted).
      */
     public static Result fit(DdpgAgent agent, double[][] observations, double[][] actions, double[] weights,
-            TrainingConfig.Pretrain config, long seed) {
+            LearnerConfig.Pretrain config, long seed) {
         int n = observations.length, obsSize = agent.observationSize(), k = agent.actionSize();
         if (weights != null && weights.length != n) {
             throw new IllegalArgumentException("need one weight per example, got " + weights.length + " for " + n);

@@ -139,7 +139,7 @@ public final class Checkpoints {
         state.integer("version", VERSION, VERSION);
         int obsSize = state.integer("observationSize", 1, 1 << 20);
         int actionSize = state.integer("actionSize", 1, 1 << 20);
-        TrainingConfig.Ddpg config = TrainingConfig.Ddpg.parse(state.get("ddpg"));
+        LearnerConfig.Ddpg config = LearnerConfig.Ddpg.parse(state.get("ddpg"));
         Json norm = state.get("normalizer");
         Normalizer normalizer = new Normalizer(obsSize, config.normalizeObservations(), config.observationClip(),
                 config.observationMinStd());

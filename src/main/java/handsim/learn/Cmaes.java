@@ -1,10 +1,8 @@
 package handsim.learn;
 
-import java.util.ArrayList;
+import handsim.rollout.LocalRollouts;
+import handsim.rollout.Rollouts;
 import java.util.List;
-import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.function.ToDoubleFunction;
 import org.apache.commons.math3.exception.TooManyEvaluationsException;
 import org.apache.commons.math3.optim.InitialGuess;
@@ -88,20 +86,8 @@ public final class Cmaes {
      * problem being seeded, the same for any number of workers.
      */
     public static List<Result> minimizeAll(List<Problem> problems, int workers) {
-        ExecutorService executor = Executors.newFixedThreadPool(workers);
-        try {
-            return minimizeAll(problems, executor);
-        } finally {
-            executor.shutdownNow();
+        try (Rollouts<Object> pool = new LocalRollouts<>(workers, Object::new)) {
+            return pool.run(problems.size(), worker -> i -> minimize(problems.get(i)));
         }
-    }
-
-    /** Solves independent problems on a caller's executor; results in input order. */
-    public static List<Result> minimizeAll(List<Problem> problems, ExecutorService executor) {
-        List<Callable<Result>> tasks = new ArrayList<>();
-        for (Problem p : problems) {
-            tasks.add(() -> minimize(p));
-        }
-        return Parallel.inOrder(executor, tasks, "CMA-ES problem");
     }
 }

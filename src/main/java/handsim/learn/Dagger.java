@@ -42,7 +42,7 @@ public final class Dagger {
 
     /** Plays a round's requests with one actor (on threads, worker processes, ...) and returns them in request order. */
     @FunctionalInterface
-    public interface EpisodePlayer {
+    public interface RoundPlayer {
         List<Episode> play(Function<double[], double[]> actor, List<Request> requests);
     }
 
@@ -138,7 +138,7 @@ public final class Dagger {
      * added to {@code earlier} (the visits of the rounds before), and an actor fitted to them all
      * ({@link #fit}; {@code network}: the actor when it is a network, else null).
      */
-    public Round round(int round, Function<double[], double[]> actor, Policy network, EpisodePlayer player, List<Visit> earlier) {
+    public Round round(int round, Function<double[], double[]> actor, Policy network, RoundPlayer player, List<Visit> earlier) {
         List<Episode> episodes = player.play(actor, requests(round));
         List<Visit> all = new ArrayList<>(earlier);
         int decisions = 0, proposalSuccesses = 0, labelled = 0;

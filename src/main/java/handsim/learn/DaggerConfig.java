@@ -31,7 +31,7 @@ import java.util.Locale;
  *     rate, held-out share)
  */
 public record DaggerConfig(long seed, int rounds, int episodesPerRound, int maxDecisionsPerEpisode, boolean executeLabel,
-        Weighting weighting, double minRobustness, Refit refit, TrainingConfig.Ddpg network, TrainingConfig.Pretrain fit) {
+        Weighting weighting, double minRobustness, Refit refit, LearnerConfig.Ddpg network, LearnerConfig.Pretrain fit) {
 
     /** Where each round's fit starts. */
     public enum Refit {
@@ -76,7 +76,7 @@ public record DaggerConfig(long seed, int rounds, int episodesPerRound, int maxD
         DaggerConfig c = new DaggerConfig(j.longValue("seed"), d.integer("rounds", 1, 1000), d.integer("episodesPerRound", 1, 1_000_000),
                 d.integer("maxDecisionsPerEpisode", 1, 100_000), d.bool("executeLabel", true), Weighting.parse(d, "weighting"),
                 d.number("minRobustness", 0, 1), refit.equals(Refit.CONTINUE.label()) ? Refit.CONTINUE : Refit.FRESH,
-                TrainingConfig.Ddpg.parse(j.get("ddpg")), TrainingConfig.Pretrain.parse(j.get("pretrain")));
+                LearnerConfig.Ddpg.parse(j.get("ddpg")), LearnerConfig.Pretrain.parse(j.get("pretrain")));
         if (c.refit == Refit.CONTINUE && c.fit.policyObservations() == 0) {
             throw d.fieldError("refit", "continue needs pretrain.policyObservations, how many observations the actor's "
                     + "normaliser statistics count as");

@@ -14,7 +14,7 @@ import org.nd4j.linalg.ops.transforms.Transforms;
  * sec. 3.7: an actor mu(s) in [-1, 1]^k (tanh output), a critic Q(s, a) (linear output, input
  * the observation and action side by side), slowly tracking target copies of both, a replay
  * buffer and an observation normaliser; optionally with TD3's twin critics, delayed policy
- * updates and target policy smoothing ({@link TrainingConfig.Td3}). Not thread-safe: one
+ * updates and target policy smoothing ({@link LearnerConfig.Td3}). Not thread-safe: one
  * training thread owns the agent; rollout workers use {@link #policy} snapshots.
  */
 public final class DdpgAgent {
@@ -23,7 +23,7 @@ public final class DdpgAgent {
     public record Losses(double critic, double actor) {
     }
 
-    final TrainingConfig.Ddpg config;
+    final LearnerConfig.Ddpg config;
     final int obsSize;
     final int actionSize;
     final MultiLayerNetwork actor;
@@ -44,7 +44,7 @@ public final class DdpgAgent {
      * initialisation, the second the critic's, the third the replay sampling (and TD3's target
      * noise), the fourth TD3's second critic.
      */
-    public static DdpgAgent create(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+    public static DdpgAgent create(LearnerConfig.Ddpg c, int obsSize, int actionSize, long seed) {
         Rng seeds = new Rng(seed);
         MultiLayerNetwork actor = Networks.mlp(obsSize, c.actorHidden(), actionSize, Activation.TANH, c.actorLr(),
                 c.actorL2(), c, seeds.nextLong());
@@ -57,13 +57,13 @@ public final class DdpgAgent {
                 new ReplayBuffer(c.replayCapacity(), obsSize, actionSize), replayRng);
     }
 
-    private static MultiLayerNetwork critic(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+    private static MultiLayerNetwork critic(LearnerConfig.Ddpg c, int obsSize, int actionSize, long seed) {
         return Networks.mlp(obsSize + actionSize, c.criticHidden(), 1, Activation.IDENTITY, c.criticLr(), c.criticL2(),
                 c, seed);
     }
 
     /** All parts given ({@link #create}, checkpoint loading). */
-    DdpgAgent(TrainingConfig.Ddpg config, int obsSize, int actionSize, MultiLayerNetwork actor, MultiLayerNetwork critic,
+    DdpgAgent(LearnerConfig.Ddpg config, int obsSize, int actionSize, MultiLayerNetwork actor, MultiLayerNetwork critic,
             MultiLayerNetwork actorTarget, MultiLayerNetwork criticTarget, MultiLayerNetwork critic2,
             MultiLayerNetwork critic2Target, Normalizer normalizer, ReplayBuffer replay, Rng replayRng) {
         if ((critic2 != null) != config.td3().twinCritics() || (critic2 == null) != (critic2Target == null)) {
@@ -94,7 +94,7 @@ public final class DdpgAgent {
         return actionSize;
     }
 
-    public TrainingConfig.Ddpg config() {
+    public LearnerConfig.Ddpg config() {
         return config;
     }
 
@@ -271,7 +271,7 @@ public final class DdpgAgent {
         int n = b.size();
         INDArray s2 = normalized(b.nextObs(), n);
         INDArray a2 = actorTarget.output(s2, false);
-        TrainingConfig.Td3 td3 = config.td3();
+        LearnerConfig.Td3 td3 = config.td3();
         if (td3.targetNoise() > 0) {
             double[] noisy = Networks.rowMajor(a2);
             for (int i = 0; i < noisy.length; i++) {

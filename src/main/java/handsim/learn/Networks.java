@@ -38,7 +38,7 @@ final class Networks {
      * and per-layer gradient clipping. The seed fixes the weight initialisation.
      */
     static MultiLayerNetwork mlp(int in, List<Integer> hidden, int out, Activation outAct, double lr, double l2,
-            TrainingConfig.Ddpg c, long seed) {
+            LearnerConfig.Ddpg c, long seed) {
         NeuralNetConfiguration.Builder b = new NeuralNetConfiguration.Builder()
                 .seed(seed)
                 .dataType(DataType.DOUBLE)

@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutorService;
 
 /**
  * The DDPG training driver for any {@link Env}: warm-up episodes with random actions, then the
@@ -25,14 +24,14 @@ public final class Trainer {
 
     /**
      * Plays a round's episode requests with a frozen policy snapshot and returns them in request
-     * order (on threads, worker processes, ...; {@link Rollouts#playAll} on an executor is one).
+     * order (on rollout workers, {@link EpisodePlayer#onWorkers}, or however the caller runs them).
      */
     @FunctionalInterface
-    public interface EpisodePlayer {
-        List<Rollouts.Episode> play(Policy snapshot, List<Rollouts.Request> requests);
+    public interface RoundPlayer {
+        List<EpisodePlayer.Episode> play(Policy snapshot, List<EpisodePlayer.Request> requests);
     }
 
-    private final TrainingConfig config;
+    private final LearnerConfig config;
     private final DdpgAgent agent;
     private final Rng episodeRng;
     private final ArrayDeque<Double> recentRewards = new ArrayDeque<>();
@@ -44,7 +43,7 @@ public final class Trainer {
     private double actorLossSum;
     private int lossCount;
 
-    private Trainer(TrainingConfig config, DdpgAgent agent, Rng episodeRng, double elapsedBefore) {
+    private Trainer(LearnerConfig config, DdpgAgent agent, Rng episodeRng, double elapsedBefore) {
         this.config = config;
         this.agent = agent;
         this.episodeRng = episodeRng;
@@ -56,14 +55,14 @@ public final class Trainer {
      * (weights, replay sampling), its second the episodes (each episode draws its env and
      * noise seeds from it, in episode order).
      */
-    public static Trainer create(TrainingConfig config, int obsSize, int actionSize) {
+    public static Trainer create(LearnerConfig config, int obsSize, int actionSize) {
         Rng root = new Rng(config.seed());
         DdpgAgent agent = DdpgAgent.create(config.ddpg(), obsSize, actionSize, root.nextLong());
         return new Trainer(config, agent, new Rng(root.nextLong()), 0);
     }
 
     /** A run with a given agent (e.g. one whose actor was pretrained, {@link ActorPretraining}). */
-    public static Trainer withAgent(TrainingConfig config, DdpgAgent agent) {
+    public static Trainer withAgent(LearnerConfig config, DdpgAgent agent) {
         if (!config.ddpg().equals(agent.config())) {
             throw new IllegalArgumentException("the agent was built with another ddpg section than the run's");
         }
@@ -80,7 +79,7 @@ public final class Trainer {
      * (oldest first) seed the moving average. What the checkpoint held and the agent lacks (a
      * trained critic, the replay buffer) makes the rest of the run differ from the lost one.
      */
-    public static Trainer continueFrom(TrainingConfig config, DdpgAgent agent, long episodes, long steps,
+    public static Trainer continueFrom(LearnerConfig config, DdpgAgent agent, long episodes, long steps,
             List<Double> recentRewards, double elapsedSeconds) {
         Trainer t = withAgent(config, agent);
         Trainer fresh = new Trainer(config, agent, t.episodeRng, elapsedSeconds);
@@ -105,14 +104,14 @@ public final class Trainer {
      * Continues a run from its checkpoint with another configuration (e.g. more episodes);
      * {@code null} keeps the saved one. The learner's section must be unchanged.
      */
-    public static Trainer resume(Path checkpoint, TrainingConfig override) throws IOException {
+    public static Trainer resume(Path checkpoint, LearnerConfig override) throws IOException {
         Checkpoints.Loaded loaded = Checkpoints.load(checkpoint);
         if (loaded.extra() == null) {
             throw new IOException(checkpoint + ": holds an agent but no trainer state");
         }
         Json s = Json.of(checkpoint + "!state.json:extra", loaded.extra());
-        TrainingConfig saved = TrainingConfig.parse(s.get("config"));
-        TrainingConfig config = override == null ? saved : override;
+        LearnerConfig saved = LearnerConfig.parse(s.get("config"));
+        LearnerConfig config = override == null ? saved : override;
         if (!config.ddpg().equals(saved.ddpg())) {
             throw new IllegalArgumentException("the ddpg section differs from the one saved in " + checkpoint);
         }
@@ -127,7 +126,7 @@ public final class Trainer {
     }
 
     /** This run going on under {@code other} (a larger budget, say); its ddpg section must be this run's. */
-    public Trainer withConfig(TrainingConfig other) {
+    public Trainer withConfig(LearnerConfig other) {
         if (!other.ddpg().equals(config.ddpg())) {
             throw new IllegalArgumentException("the ddpg section differs from the run's");
         }
@@ -155,7 +154,7 @@ public final class Trainer {
         return agent;
     }
 
-    public TrainingConfig config() {
+    public LearnerConfig config() {
         return config;
     }
 
@@ -171,19 +170,18 @@ public final class Trainer {
 
     /**
      * Trains until {@code training.episodes} episodes are done, saving {@code checkpointFile}
-     * (if not null) every {@code checkpointEveryEpisodes} episodes and at the end.
-     * {@code executor} may be null when {@code parallelEpisodes} is 1 (then only the first
-     * environment is used).
+     * (if not null) every {@code checkpointEveryEpisodes} episodes and at the end: online on
+     * {@code env} when {@code parallelEpisodes} is 1, else in rounds played by {@code rounds}
+     * (which may be null otherwise).
      */
-    public void train(List<? extends Env> envs, ExecutorService executor, TrainingListener listener, Path checkpointFile)
-            throws IOException {
+    public void train(Env env, RoundPlayer rounds, TrainingListener listener, Path checkpointFile) throws IOException {
         int every = config.training().checkpointEveryEpisodes();
         while (episodes < config.training().episodes()) {
             long before = episodes;
             if (config.training().parallelEpisodes() == 1) {
-                runEpisode(envs.get(0), listener);
+                runEpisode(env, listener);
             } else {
-                runRound(envs, executor, listener);
+                runRound(rounds, listener);
             }
             if (checkpointFile != null && every > 0 && episodes / every != before / every) {
                 checkpoint(checkpointFile);
@@ -196,9 +194,9 @@ public final class Trainer {
 
     /** One episode of online learning: store and update after every decision. */
     public EpisodeStats runEpisode(Env env, TrainingListener listener) {
-        Rollouts.Request req = nextRequest();
+        EpisodePlayer.Request req = nextRequest();
         double[] q0 = {Double.NaN};
-        Rollouts.Episode ep = Rollouts.play(env, req, agent::act, config.exploration(), new Rollouts.StepHook() {
+        EpisodePlayer.Episode ep = EpisodePlayer.play(env, req, agent::act, config.exploration(), new EpisodePlayer.StepHook() {
             @Override
             public void onReset(double[] first) {
                 agent.observe(first);
@@ -206,7 +204,7 @@ public final class Trainer {
             }
 
             @Override
-            public void afterStep(Rollouts.Transition t) {
+            public void afterStep(EpisodePlayer.Transition t) {
                 learnFrom(t, listener);
             }
         });
@@ -218,34 +216,28 @@ public final class Trainer {
      * their updates; results in episode order whatever the number of workers. The round's mean
      * losses are reported on each of its episodes.
      */
-    public List<EpisodeStats> runRound(List<? extends Env> envs, ExecutorService executor, TrainingListener listener) {
-        return runRound((snapshot, requests) -> Rollouts.playAll(envs, executor, snapshot, requests, config.exploration()),
-                listener);
-    }
-
-    /** {@link #runRound(List, ExecutorService, TrainingListener)} with the episodes played by {@code player}. */
-    public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener) {
+    public List<EpisodeStats> runRound(RoundPlayer player, TrainingListener listener) {
         return runRound(player, listener, Integer.MAX_VALUE);
     }
 
     /** A round of at most {@code maxEpisodes} episodes (train --session-episodes stopping before the run's budget). */
-    public List<EpisodeStats> runRound(EpisodePlayer player, TrainingListener listener, int maxEpisodes) {
+    public List<EpisodeStats> runRound(RoundPlayer player, TrainingListener listener, int maxEpisodes) {
         int k = (int) Math.min(Math.min(config.training().parallelEpisodes(), maxEpisodes),
                 Math.max(1, config.training().episodes() - episodes));
-        List<Rollouts.Request> requests = new ArrayList<>();
+        List<EpisodePlayer.Request> requests = new ArrayList<>();
         for (int i = 0; i < k; i++) {
             requests.add(nextRequest());
         }
         Policy snapshot = agent.policy("training snapshot", "[-1, 1]^" + agent.actionSize());
-        List<Rollouts.Episode> played = player.play(snapshot, requests);
+        List<EpisodePlayer.Episode> played = player.play(snapshot, requests);
         double[] q0 = new double[k];
         for (int i = 0; i < k; i++) {
             q0[i] = agent.value(played.get(i).firstObservation()); // the networks the episodes were played with
         }
         long stepsAtEnd = steps;
-        for (Rollouts.Episode ep : played) {
+        for (EpisodePlayer.Episode ep : played) {
             agent.observe(ep.firstObservation());
-            for (Rollouts.Transition t : ep.transitions()) {
+            for (EpisodePlayer.Transition t : ep.transitions()) {
                 learnFrom(t, listener);
             }
         }
@@ -258,16 +250,16 @@ public final class Trainer {
         return out;
     }
 
-    private Rollouts.Request nextRequest() {
+    private EpisodePlayer.Request nextRequest() {
         long envSeed = episodeRng.nextLong();
         long noiseSeed = episodeRng.nextLong();
         boolean warmup = steps < config.exploration().warmupSteps();
-        return new Rollouts.Request(envSeed, noiseSeed, config.exploration().sigmaAt(steps), warmup,
+        return new EpisodePlayer.Request(envSeed, noiseSeed, config.exploration().sigmaAt(steps), warmup,
                 config.training().maxDecisionsPerEpisode());
     }
 
     /** Store a decision; after the warm-up, do the updates it is worth. */
-    private void learnFrom(Rollouts.Transition t, TrainingListener listener) {
+    private void learnFrom(EpisodePlayer.Transition t, TrainingListener listener) {
         agent.observe(t.nextObs());
         agent.store(t.obs(), t.action(), t.reward(), t.nextObs(), t.terminal());
         steps++;
@@ -293,7 +285,7 @@ public final class Trainer {
         return lossCount == 0 ? Double.NaN : actorLossSum / lossCount;
     }
 
-    private EpisodeStats finishEpisode(Rollouts.Episode ep, double q0, double criticLoss, double actorLoss,
+    private EpisodeStats finishEpisode(EpisodePlayer.Episode ep, double q0, double criticLoss, double actorLoss,
             long stepsAtEnd, TrainingListener listener) {
         episodes++;
         recentRewards.addLast(ep.reward());

@@ -9,8 +9,10 @@
  * its dataset on disk {@link handsim.learn.DemonstrationSet}).
  *
  * <p>Actions are always in [-1, 1]^k (the actor's tanh range); each task maps them onto its
- * own parameter box (see {@link handsim.control.ThrowSpace}). This package imports neither
- * ode4j nor LWJGL; it sees a task only through {@link handsim.learn.Env}.
+ * own parameter box (see {@code handsim.control.ThrowSpace}). Imports {@code handsim.config}
+ * (its JSON configs), {@code handsim.report} (curves, atomic files), {@code handsim.rollout}
+ * (episodes on parallel workers), deeplearning4j and nd4j; never ode4j, LWJGL or picocli, and
+ * nothing of the tasks: it sees a task only through {@link handsim.learn.Env}.
  *
  * <p>How a task plugs in (the throw tasks, for example): its {@code Env} observes the hand and
  * object state plus the goal (sec. 3.7), turns the action into {@code ThrowParameters} with
@@ -18,10 +20,10 @@
  * of eq. (5)-(7), {@code terminal} when the object is dropped and {@code truncated} at the loop
  * cap. Then
  * <pre>
- * TrainingConfig c = TrainingConfig.load(Path.of("configs/train/ddpg-defaults.json"));
+ * LearnerConfig c = LearnerConfig.load(Path.of("configs/train/ddpg-defaults.json"));
  * Trainer t = Trainer.create(c, env.observationSize(), env.actionSize());   // or Trainer.resume(checkpoint)
  * try (MetricsCsv csv = MetricsCsv.open(runDir.resolve("metrics.csv"), t.episodes())) {
- *     t.train(List.of(env), null, csv, runDir.resolve("checkpoint.zip"));
+ *     t.train(env, null, csv, runDir.resolve("checkpoint.zip"));   // or in rounds on rollout workers: EpisodePlayer.onWorkers
  * }
  * LearningCurves.plotRewards(runDir.resolve("rewards.png"), MetricsCsv.read(...), "height task");
  * t.agent().policy("height task, seed 1", "ThrowSpace of configs/controller.json").save(policyFile);

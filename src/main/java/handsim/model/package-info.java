@@ -7,5 +7,7 @@
  * <p>Frames: in the model's zero configuration (all joint angles 0, the anatomical position)
  * every body frame is aligned with the world frame and has its origin at the body's joint
  * anchor; shapes, centres of mass and joint axes are given in that frame.
+ *
+ * <p>Imports {@code handsim.math} and {@code handsim.config}; no engine.
  */
 package handsim.model;

@@ -1,6 +1,5 @@
 package handsim.rollout;
 
-import handsim.sim.Simulator;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
@@ -14,28 +13,28 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 
 /**
- * Rollouts on worker threads of this JVM. Each worker owns one simulator for its lifetime
- * (made by the factory on first use and reused across runs); the rollouts of a run are handed
- * out one index at a time to whichever worker is free. Since a rollout depends on its index
- * alone, which worker runs it does not change its result. The simulators must not share
- * mutable state: for ode4j use {@code IsolatedEngine}, which gives each its own copy of the
- * engine's statics.
+ * Rollouts on worker threads of this JVM. Each worker owns one resource for its lifetime (made
+ * by the factory on first use and reused across runs, closed with the rollouts when it is
+ * {@link AutoCloseable}); the rollouts of a run are handed out one index at a time to whichever
+ * worker is free. Since a rollout depends on its index alone, which worker runs it does not
+ * change its result. The resources must not share mutable state: for ode4j simulators use {@code
+ * IsolatedEngine}, which gives each its own copy of the engine's statics.
  */
-public final class LocalRollouts implements Rollouts {
+public final class LocalRollouts<W> implements Rollouts<W> {
 
     private final int workers;
-    private final Supplier<Simulator> simulators;
-    private final Simulator[] sims;
+    private final Supplier<W> resources;
+    private final Object[] owned;
     private final ExecutorService pool;
 
-    /** {@code workers} threads (at least 1), simulators from {@code simulators}. */
-    public LocalRollouts(int workers, Supplier<Simulator> simulators) {
+    /** {@code workers} threads (at least 1), each worker's resource from {@code resources}. */
+    public LocalRollouts(int workers, Supplier<W> resources) {
         if (workers < 1) {
             throw new IllegalArgumentException("workers must be at least 1, got " + workers);
         }
         this.workers = workers;
-        this.simulators = simulators;
-        this.sims = new Simulator[workers];
+        this.resources = resources;
+        this.owned = new Object[workers];
         AtomicInteger made = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(workers, r -> {
             Thread t = new Thread(r, "rollout-" + made.getAndIncrement());
@@ -59,7 +58,7 @@ public final class LocalRollouts implements Rollouts {
     }
 
     @Override
-    public <R> List<R> run(int count, RolloutTask<R> task, Listener<? super R> listener) {
+    public <R> List<R> run(int count, RolloutTask<W, R> task, Listener<? super R> listener) {
         if (count < 0) {
             throw new IllegalArgumentException("count must be >= 0, got " + count);
         }
@@ -71,7 +70,7 @@ public final class LocalRollouts implements Rollouts {
             int worker = w;
             running.add(pool.submit(() -> {
                 try {
-                    RolloutTask.Rollout<R> rollout = task.prepare(simulator(worker));
+                    RolloutTask.Rollout<R> rollout = task.prepare(resource(worker));
                     for (int i = next.getAndIncrement(); i < count && !stop.get(); i = next.getAndIncrement()) {
                         done.add(new Done(i, rollout.run(i), null));
                     }
@@ -112,19 +111,20 @@ public final class LocalRollouts implements Rollouts {
         return Collections.unmodifiableList(out);
     }
 
-    /** Worker {@code w}'s simulator; only the thread running worker w's task touches it. */
-    private Simulator simulator(int w) {
-        Simulator s;
-        synchronized (sims) {
-            s = sims[w];
+    /** Worker {@code w}'s resource; only the thread running worker w's task touches it. */
+    @SuppressWarnings("unchecked")
+    private W resource(int w) {
+        Object r;
+        synchronized (owned) {
+            r = owned[w];
         }
-        if (s == null) {
-            s = simulators.get();
-            synchronized (sims) {
-                sims[w] = s;
+        if (r == null) {
+            r = resources.get();
+            synchronized (owned) {
+                owned[w] = r;
             }
         }
-        return s;
+        return (W) r;
     }
 
     private static void awaitAll(List<Future<?>> running) {
@@ -150,13 +150,23 @@ public final class LocalRollouts implements Rollouts {
     @Override
     public void close() {
         pool.shutdownNow();
-        synchronized (sims) {
-            for (int w = 0; w < sims.length; w++) {
-                if (sims[w] != null) {
-                    sims[w].close();
-                    sims[w] = null;
+        synchronized (owned) {
+            for (int w = 0; w < owned.length; w++) {
+                if (owned[w] instanceof AutoCloseable c) {
+                    closeQuietly(c);
                 }
+                owned[w] = null;
             }
+        }
+    }
+
+    private static void closeQuietly(AutoCloseable c) {
+        try {
+            c.close();
+        } catch (RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException("a rollout worker's resource failed to close", e);
         }
     }
 }

@@ -1,18 +1,18 @@
 package handsim.rollout;
 
-import handsim.sim.Simulator;
 
 /**
- * What to run: {@link #prepare} is called once per worker and run with the worker's own
- * simulator, and builds the worker's private state (controllers, goal sequences, buffers);
- * the {@link Rollout} it returns then runs rollouts by index on that worker.
+ * What to run: {@link #prepare} is called once per worker with what the worker owns (its own
+ * simulator, its own environment), and builds the worker's private state (controllers, goal
+ * sequences, buffers); the {@link Rollout} it returns then runs rollouts by index on that worker.
  *
+ * @param <W> what each worker owns
  * @param <R> the result of one rollout
  */
 @FunctionalInterface
-public interface RolloutTask<R> {
+public interface RolloutTask<W, R> {
 
-    Rollout<R> prepare(Simulator sim);
+    Rollout<R> prepare(W worker);
 
     /** One worker's runner of rollouts. */
     @FunctionalInterface

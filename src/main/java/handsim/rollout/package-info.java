@@ -1,12 +1,13 @@
 /**
- * Parallel rollouts: many independent simulations (evaluation episodes, training episodes,
- * benchmark loops) spread over worker threads, each worker with a simulator of its own. A
- * rollout is a function of its index alone (its seed comes from the index, and it resets the
- * simulator), so the results are the same whatever the number of workers; they come back in
- * index order.
+ * Parallel rollouts, the one way handsim runs independent work in parallel: evaluation and
+ * training episodes, benchmark loops, the learner's episodes on its environments and CMA-ES
+ * searches, spread over worker threads, each worker with a resource of its own (a simulator, an
+ * environment). A rollout is a function of its index alone (its seed comes from the index, and
+ * it resets what it runs on), so the results are the same whatever the number of workers; they
+ * come back in index order.
  *
  * <pre>{@code
- * try (Rollouts rollouts = new LocalRollouts(LocalRollouts.localCores(),
+ * try (Rollouts<Simulator> rollouts = new LocalRollouts<>(LocalRollouts.localCores(),
  *         () -> IsolatedEngine.simulator(model, simConfig))) {
  *     List<EpisodeResult> results = rollouts.run(episodes, sim -> {
  *         CatchEvaluation evaluation = ...;           // per worker: it holds mutable goals
@@ -16,6 +17,7 @@
  * }</pre>
  *
  * Workers of one JVM must not share engine state: ode4j's statics (its random generator above
- * all) are per class loader, hence {@link handsim.sim.ode.IsolatedEngine}.
+ * all) are per class loader, hence {@code handsim.sim.ode.IsolatedEngine}. Imports nothing of
+ * handsim: what a worker owns is a type parameter.
  */
 package handsim.rollout;

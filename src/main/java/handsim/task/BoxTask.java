@@ -27,16 +27,18 @@ public final class BoxTask implements ThrowTask {
      * @param horizontalGain the nominal throw's horizontal palm offset per metre of the box's
      *     horizontal offset from the palm
      */
+    /** {@code configs/tasks/box.json}; {@code loopsRequired}: hit-and-catch loops in a row that make a box trial a success. */
     public record Config(double size, Vec3 regionLow, Vec3 regionHigh, double missWeight, double apexMargin,
-            double horizontalGain) {
+            double horizontalGain, int loopsRequired) {
 
         public static Config parse(Json j) {
-            j.allow("comment");
+            j.allow("comment", "loopsRequiredComment");
             Json region = j.get("region");
             double[] x = region.range("x"), y = region.range("y"), z = region.range("z");
             region.requireNoUnknownFields();
             Config c = new Config(j.positive("size"), new Vec3(x[0], y[0], z[0]), new Vec3(x[1], y[1], z[1]),
-                    j.number("missWeight", 0, 100), j.number("apexMargin", -1, 1), j.number("horizontalGain", 0, 10));
+                    j.number("missWeight", 0, 100), j.number("apexMargin", -1, 1), j.number("horizontalGain", 0, 10),
+                    j.integer("loopsRequired", 1, 1000));
             j.requireNoUnknownFields();
             return c;
         }

@@ -56,16 +56,17 @@ public final class FlipTask implements ThrowTask {
      * @param targetOffset p_d relative to the neutral palm centre (m, world)
      * @param space the box of throw parameters: flips need far more palm rotation than the other tasks
      * @param objects the objects that can be flipped, by name
+     * @param evaluationLoops the most flip-and-catch loops an evaluation episode runs to by default
      */
-    public record Config(double tolerance, double maxCatchTilt, double endFirstTilt, double sharpness, double missWeight, double flipBonus, Vec3 targetOffset,
-            ThrowSpace space, Map<String, ObjectFlip> objects) {
+    public record Config(double tolerance, double maxCatchTilt, double endFirstTilt, double sharpness, double missWeight, double flipBonus,
+            Vec3 targetOffset, ThrowSpace space, Map<String, ObjectFlip> objects, int evaluationLoops) {
 
         public Config {
             objects = Map.copyOf(objects);
         }
 
         public static Config parse(Json j) {
-            j.allow("comment", "maxCatchTiltComment", "endFirstTiltComment");
+            j.allow("comment", "maxCatchTiltComment", "endFirstTiltComment", "evaluationLoopsComment");
             Json objs = j.get("objects");
             objs.allow("comment");
             Map<String, ObjectFlip> flips = new LinkedHashMap<>();
@@ -92,8 +93,8 @@ public final class FlipTask implements ThrowTask {
             }
             Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
                     Math.toRadians(j.number("maxCatchTiltDeg", 0, 90)), Math.toRadians(j.number("endFirstTiltDeg", 0, 90)),
-                    j.positive("sharpness"),
-                    j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"), space, flips);
+                    j.positive("sharpness"), j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"),
+                    space, flips, j.integer("evaluationLoops", 0, 100000));
             j.requireNoUnknownFields();
             return c;
         }

@@ -3,21 +3,14 @@ package handsim.task;
 import java.util.SplittableRandom;
 
 /**
- * The desired apex height of each throw: fixed, drawn uniformly from [low, high] for every
+ * The desired apex height of each throw (the height task's config says which heights a goal may
+ * have, {@link HeightTask.Config#allowsGoal}): fixed, drawn uniformly from [low, high] for every
  * throw from the episode's seed, or taken in turn from a given list (again from its start in
  * every episode). The policy reads {@link #current()}; the episode moves on to
  * the next goal once a throw has been made. A person watching may {@link #shift} the goals up or
  * down while the episode runs.
  */
 public final class HeightGoals {
-
-    /**
-     * Sanity limits of a goal apex (m, world, exclusive). The catch meets a falling object where
-     * it crosses the interception plane, 0.72 m high (configs/controller.json): an apex must lie
-     * above it. An apex of 3 m asks for a release at about sqrt(2 g (3 - 0.9)) = 6.4 m/s from a
-     * palm 0.9 m high, far past the throws the arm makes (its nominal throws reach 1.6 m).
-     */
-    public static final double LOWEST = 0.7, HIGHEST = 3.0;
 
     private double low;
     private double high;
@@ -27,9 +20,8 @@ public final class HeightGoals {
     private int next;
 
     public HeightGoals(double low, double high) {
-        if (!(low > LOWEST && high >= low && high < HIGHEST)) {
-            throw new IllegalArgumentException("height goals must lie in (" + LOWEST + ", " + HIGHEST + ") m with low <= high, "
-                    + "got [" + low + ", " + high + "]");
+        if (!(low > 0 && high >= low && high < Double.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("height goals must lie above 0 m with low <= high, got [" + low + ", " + high + "]");
         }
         this.low = low;
         this.high = high;

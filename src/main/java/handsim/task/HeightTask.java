@@ -25,20 +25,46 @@ public final class HeightTask implements ThrowTask {
      * @param successTolerance a caught throw within this of its target counts as a success (m)
      * @param space the box of throw parameters for this task
      */
+    /**
+     * {@code configs/tasks/height.json}.
+     *
+     * @param lowestGoal the lowest apex a goal may have (m, excluded): the catch meets a falling
+     *     object where it crosses the interception plane, 0.72 m high (configs/controller.json), so
+     *     an apex must lie above it
+     * @param highestGoal the highest (m, excluded): an apex of 3 m asks for a release at about
+     *     sqrt(2 g (3 - 0.9)) = 6.4 m/s from a palm 0.9 m high, far past the throws the arm makes
+     *     (its nominal throws reach 1.6 m)
+     * @param evaluationThrows throws an evaluation episode attempts after the first catch by default
+     */
     public record Config(double low, double high, double sharpness, double missWeight, double successTolerance,
-            ThrowSpace space) {
+            ThrowSpace space, double lowestGoal, double highestGoal, int evaluationThrows) {
 
         public static Config parse(Json j) {
-            j.allow("comment");
+            j.allow("comment", "goalLimitsComment", "evaluationThrowsComment");
+            double[] limits = j.range("goalLimits");
+            if (!(limits[0] > 0)) {
+                throw j.fieldError("goalLimits", "heights must lie above 0 m, got [" + limits[0] + ", " + limits[1] + "]");
+            }
             double[] range = j.range("goalRange");
-            if (!(range[0] > HeightGoals.LOWEST && range[1] < HeightGoals.HIGHEST)) {
-                throw j.fieldError("goalRange", "heights must lie in (" + HeightGoals.LOWEST + ", " + HeightGoals.HIGHEST
+            if (!(range[0] > limits[0] && range[1] < limits[1])) {
+                throw j.fieldError("goalRange", "heights must lie in (" + limits[0] + ", " + limits[1]
                         + ") m, got [" + range[0] + ", " + range[1] + "]");
             }
             Config c = new Config(range[0], range[1], j.positive("sharpness"), j.number("missWeight", 0, 100),
-                    j.positive("successTolerance"), ThrowSpace.parse(j.get("throwSpace")));
+                    j.positive("successTolerance"), ThrowSpace.parse(j.get("throwSpace")), limits[0], limits[1],
+                    j.integer("evaluationThrows", 0, 100000));
             j.requireNoUnknownFields();
             return c;
+        }
+
+        /** Whether {@code height} may be a goal: inside the open interval of the goal limits. */
+        public boolean allowsGoal(double height) {
+            return height > lowestGoal && height < highestGoal;
+        }
+
+        /** The goal limits as a message gives them: "(0.7, 3.0) m". */
+        public String goalLimits() {
+            return "(" + lowestGoal + ", " + highestGoal + ") m";
         }
     }
 

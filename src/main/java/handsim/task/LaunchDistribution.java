@@ -1,5 +1,6 @@
 package handsim.task;
 
+
 import handsim.config.Json;
 import handsim.math.Quat;
 import handsim.math.Vec3;
@@ -44,7 +45,7 @@ public record LaunchDistribution(double[] startX, double[] startY, double[] star
         Vec3 start = palm.plus(new Vec3(draw(rng, startX), draw(rng, startY), draw(rng, startZ)));
         Vec3 arrival = new Vec3(palm.x() + draw(rng, arrivalX), planeHeight, palm.z() + draw(rng, arrivalZ));
         double t = draw(rng, flightTime);
-        RigidState flight = HeldBallScenario.ballisticLaunch(start, arrival, t, gravity);
+        RigidState flight = ballisticLaunch(start, arrival, t, gravity);
         Quat orientation = Quat.IDENTITY;
         Vec3 spinVector = Vec3.ZERO;
         if (spec.longAxis().isPresent()) {
@@ -60,5 +61,12 @@ public record LaunchDistribution(double[] startX, double[] startY, double[] star
 
     private static double draw(SplittableRandom rng, double[] range) {
         return range[0] + rng.nextDouble() * (range[1] - range[0]);
+    }
+
+    /** The launch state that carries a point mass from {@code from} to {@code to} in {@code time} under gravity. */
+    public static RigidState ballisticLaunch(Vec3 from, Vec3 to, double time, Vec3 gravity) {
+        // to = from + v t + g t^2 / 2
+        Vec3 v = to.minus(from).minus(gravity.times(0.5 * time * time)).times(1.0 / time);
+        return RigidState.at(from, v);
     }
 }

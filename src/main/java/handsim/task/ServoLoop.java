@@ -18,7 +18,6 @@ public final class ServoLoop {
     private final double[] qd;
     private final double[] tau;
     private final double[] targets;
-    private double peakTorqueRatio;
 
     public ServoLoop(Simulator sim, PdController pd) {
         this.sim = sim;
@@ -39,10 +38,14 @@ public final class ServoLoop {
         return targets;
     }
 
-    /** One physics step with PD torques toward {@link #targets()}. */
-    public void step() {
+    /**
+     * One physics step with PD torques toward {@link #targets()}; returns the step's largest
+     * |PD torque| / strength limit over the joints (1 = at the limit).
+     */
+    public double step() {
         sim.readJoints(q, qd);
         pd.torques(q, qd, targets, tau);
+        double peakTorqueRatio = 0;
         for (int i = 0; i < tau.length; i++) {
             Dof d = sim.model().dofs().get(i);
             peakTorqueRatio = Math.max(peakTorqueRatio, d.torqueRatio(tau[i]));
@@ -50,6 +53,7 @@ public final class ServoLoop {
         }
         sim.setJointTorques(tau);
         sim.step();
+        return peakTorqueRatio;
     }
 
     /** Advances by {@code steps} physics steps. */
@@ -57,19 +61,5 @@ public final class ServoLoop {
         for (int i = 0; i < steps; i++) {
             step();
         }
-    }
-
-    /** Largest |torque| / strength limit seen since the last {@link #resetPeakTorqueRatio()} (1 = at the limit). */
-    public double peakTorqueRatio() {
-        return peakTorqueRatio;
-    }
-
-    public void resetPeakTorqueRatio() {
-        peakTorqueRatio = 0;
-    }
-
-    /** Goes on from a peak recorded elsewhere (an episode restored from a checkpoint). */
-    void restorePeakTorqueRatio(double peak) {
-        peakTorqueRatio = peak;
     }
 }

@@ -26,18 +26,31 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
     public ThrowTask create(String name, String object) {
         return switch (name) {
             case "height" -> height(null);
-            case "box" -> new BoxTask(BoxTask.Config.parse(Json.load(Home.resolve("configs/tasks/box.json"))), nominal,
-                    neutralPalm);
-            case "flip" -> new FlipTask(FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))), object,
-                    neutralPalm);
+            case "box" -> new BoxTask(boxConfig(), nominal, neutralPalm);
+            case "flip" -> new FlipTask(flipConfig(), object, neutralPalm);
             default -> throw new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
         };
     }
 
     /** The height task aiming at {@code goals}, or at its config's goal range when null. */
     public HeightTask height(HeightGoals goals) {
-        HeightTask.Config c = HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json")));
+        HeightTask.Config c = heightConfig();
         return new HeightTask(c, goals != null ? goals : new HeightGoals(c.low(), c.high()), nominal, neutralPalm,
                 groundHeight);
+    }
+
+    /** {@code configs/tasks/height.json}. */
+    public static HeightTask.Config heightConfig() {
+        return HeightTask.Config.parse(Json.load(Home.resolve("configs/tasks/height.json")));
+    }
+
+    /** {@code configs/tasks/box.json}. */
+    public static BoxTask.Config boxConfig() {
+        return BoxTask.Config.parse(Json.load(Home.resolve("configs/tasks/box.json")));
+    }
+
+    /** {@code configs/tasks/flip.json}. */
+    public static FlipTask.Config flipConfig() {
+        return FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json")));
     }
 }

@@ -21,6 +21,17 @@ public interface ThrowTask {
     int goalSize();
 
     /**
+     * Refuses this task to {@code user} (a throw planner, a teacher) when its goal changes from
+     * throw to throw: a twin episode restored from a checkpoint does not carry the task's goal.
+     */
+    default void requireFixedGoal(String user) {
+        if (goalSize() != 0) {
+            throw new IllegalArgumentException("the " + user + " needs a task whose goal stays the same from throw to throw "
+                    + "(flip); the " + name() + " task's changes");
+        }
+    }
+
+    /**
      * Begins an episode in a world that was just reset: draws the episode's goals from
      * {@code seed} and adds the task's scenery (the box) to {@code sim}.
      */

@@ -9,7 +9,7 @@ import handsim.learn.Policy;
 import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
-import handsim.task.ThrowTeacher;
+import handsim.evaluation.ThrowTeacher;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -53,12 +53,12 @@ public final class DaggerRun {
 
     private final Path dir;
     private final DaggerRunConfig config;
-    private final ThrowEnvs envs;
-    private final Rollouts rollouts;
+    private final ThrowEnvFactory envs;
+    private final Rollouts<Simulator> rollouts;
     private final Function<Simulator, Simulator> twins;
     private final ObjectNode startedBy;
 
-    private DaggerRun(Path dir, DaggerRunConfig config, ThrowEnvs envs, Rollouts rollouts, Function<Simulator, Simulator> twins) {
+    private DaggerRun(Path dir, DaggerRunConfig config, ThrowEnvFactory envs, Rollouts<Simulator> rollouts, Function<Simulator, Simulator> twins) {
         this.dir = dir;
         this.config = config;
         this.envs = envs;
@@ -79,7 +79,7 @@ public final class DaggerRun {
      * round 0's learner is {@code initPolicy} (a throw policy file of the run's task, object and
      * state), or the task's nominal throw when null.
      */
-    public static DaggerRun start(Path dir, Json configFile, ThrowEnvs envs, Rollouts rollouts, Function<Simulator, Simulator> twins,
+    public static DaggerRun start(Path dir, Json configFile, ThrowEnvFactory envs, Rollouts<Simulator> rollouts, Function<Simulator, Simulator> twins,
             ObjectNode provenance, Path initPolicy) throws IOException {
         if (Files.exists(dir.resolve(CONFIG))) {
             throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
@@ -98,7 +98,7 @@ public final class DaggerRun {
     }
 
     /** Continues the run in {@code dir} with the config saved there. */
-    public static DaggerRun resume(Path dir, ThrowEnvs envs, Rollouts rollouts, Function<Simulator, Simulator> twins) {
+    public static DaggerRun resume(Path dir, ThrowEnvFactory envs, Rollouts<Simulator> rollouts, Function<Simulator, Simulator> twins) {
         Path file = dir.resolve(CONFIG);
         if (!Files.isRegularFile(file)) {
             throw new IllegalArgumentException(dir + " is not a DAgger run folder (no " + CONFIG + ")");
@@ -190,7 +190,7 @@ public final class DaggerRun {
     }
 
     /** The actor of a throw policy file, checked against the run's task, object, state and throw box. */
-    private static Policy checkedPolicy(ThrowPolicyFile f, Path file, ThrowEnvs envs) {
+    private static Policy checkedPolicy(ThrowPolicyFile f, Path file, ThrowEnvFactory envs) {
         String mismatch = f.mismatch(envs);
         if (mismatch != null) {
             throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
@@ -209,7 +209,7 @@ public final class DaggerRun {
     private void savePolicy(Policy actor, int round) throws IOException {
         ObjectNode provenance = Json.mapper().createObjectNode();
         provenance.put("run", dir.getFileName().toString());
-        provenance.put("method", "DAgger with the twin-world teacher (handsim.task.ThrowTeacher)");
+        provenance.put("method", "DAgger with the twin-world teacher (handsim.evaluation.ThrowTeacher)");
         provenance.put("round", round);
         provenance.setAll(startedBy);
         provenance.set("config", Json.load(dir.resolve(CONFIG)).node());

@@ -2,7 +2,7 @@ package handsim.train;
 
 import handsim.config.Json;
 import handsim.learn.DaggerConfig;
-import handsim.task.ThrowTeacher;
+import handsim.evaluation.ThrowTeacher;
 import java.nio.file.Path;
 
 /**

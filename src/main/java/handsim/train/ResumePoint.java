@@ -6,7 +6,7 @@ import handsim.learn.DdpgAgent;
 import handsim.learn.EpisodeStats;
 import handsim.learn.MetricsCsv;
 import handsim.learn.Trainer;
-import handsim.learn.TrainingConfig;
+import handsim.learn.LearnerConfig;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -49,7 +49,7 @@ final class ResumePoint {
     }
 
     /** The newest intact earlier checkpoint, else the newest intact policy snapshot, else null. */
-    static Found fallback(Path dir, TrainConfig config, ThrowEnvs envs, Consumer<String> notes) throws IOException {
+    static Found fallback(Path dir, TrainConfig config, ThrowEnvFactory envs, Consumer<String> notes) throws IOException {
         try {
             Trainer t = checkpoint(dir.resolve(TrainRun.PREVIOUS_CHECKPOINT), config);
             return new Found(TrainRun.PREVIOUS_CHECKPOINT + " (episode " + t.episodes() + ")", t);
@@ -87,7 +87,7 @@ final class ResumePoint {
      * statistics (counting as the decisions played), the run's episodes, decisions, moving average
      * and wall time as they stood at the snapshot (from its provenance and metrics.csv).
      */
-    private static Trainer fromSnapshot(Path dir, Path snapshot, TrainConfig config, ThrowEnvs envs) throws IOException {
+    private static Trainer fromSnapshot(Path dir, Path snapshot, TrainConfig config, ThrowEnvFactory envs) throws IOException {
         ThrowPolicyFile f = ThrowPolicyFile.load(snapshot);
         Json p = Json.of(snapshot + "!provenance", f.provenance());
         long episodes = p.longValue("episodes"), decisions = p.longValue("decisions");
@@ -95,7 +95,7 @@ final class ResumePoint {
             throw new IllegalArgumentException("it is a policy of the " + f.task() + " task with a " + f.object()
                     + ", not of this run");
         }
-        TrainingConfig l = config.learner();
+        LearnerConfig l = config.learner();
         DdpgAgent agent = Warmstart.seededAgent(l, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
         agent.startActorFrom(f.policy(), Math.max(2, decisions));
         List<EpisodeStats> rows = new ArrayList<>();

@@ -2,7 +2,7 @@ package handsim.train;
 
 import handsim.learn.Demonstration;
 import handsim.learn.TeachableEnv;
-import handsim.task.ThrowTeacher;
+import handsim.evaluation.ThrowTeacher;
 
 /**
  * A {@link ThrowEnv} whose decisions a {@link ThrowTeacher} labels: the teacher plays throws in

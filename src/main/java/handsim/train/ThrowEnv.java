@@ -1,20 +1,18 @@
 package handsim.train;
 
 import handsim.control.Observation;
+import handsim.control.ThrowDecision;
 import handsim.control.ThrowParameters;
-import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Env;
 import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
-import handsim.task.ChosenThrow;
 import handsim.task.LoopRecord;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.util.List;
-import java.util.function.Function;
 
 /**
  * A throw task as the learner sees it (on a simulator it uses but does not own): an episode starts with an object thrown into the hand
@@ -45,25 +43,23 @@ public final class ThrowEnv implements Env {
     private final ThrowSpace space;
     private final StateVector stateVector;
     private final Settings settings;
-    /** The throw policy of the episodes: it hands the controller the action of the current step. */
-    private final ChosenThrow chosen = new ChosenThrow();
     private final CatchEvaluation evaluation;
     private CatchThrowEpisode episode;
     private double[] state;
     private int diverged;
 
     /**
-     * @param evaluation builds the episodes from the task and a throw policy (the environment's
-     *     own, which plays the chosen actions)
+     * @param evaluation starts the episodes of {@code task} (their throws are the actions, {@link
+     *     CatchEvaluation#DECIDED_BY_CALLER})
      */
     public ThrowEnv(Simulator sim, ThrowTask task, ThrowSpace space, StateVector stateVector, Settings settings,
-            Function<ThrowPolicy, CatchEvaluation> evaluation) {
+            CatchEvaluation evaluation) {
         this.sim = sim;
         this.task = task;
         this.space = space;
         this.stateVector = stateVector;
         this.settings = settings;
-        this.evaluation = evaluation.apply(chosen);
+        this.evaluation = evaluation;
     }
 
     @Override
@@ -86,7 +82,7 @@ public final class ThrowEnv implements Env {
         for (int attempt = 0; attempt < settings.firstCatchAttempts(); attempt++) {
             episode = evaluation.start(sim, seed * settings.firstCatchAttempts() + attempt);
             try {
-                Observation first = episode.runUntilThrowDue();
+                Observation first = episode.advanceToDecision();
                 if (first != null) {
                     state = stateVector.encode(first, task.goal());
                     return state.clone();
@@ -106,11 +102,10 @@ public final class ThrowEnv implements Env {
         if (episode == null || episode.status() != CatchThrowEpisode.Status.RUNNING) {
             throw new IllegalStateException("step() needs a running episode: call reset() first");
         }
-        chosen.set(space.fromAction(action));
         Observation next;
         try {
-            episode.resume();
-            next = episode.runUntilThrowDue();
+            episode.decide(ThrowDecision.of(space.fromAction(action)));
+            next = episode.advanceToDecision();
         } catch (SimulationDiverged e) {
             diverged++;
             System.err.println("handsim: simulation diverged during a throw (" + e.getMessage() + "); the episode ends there");

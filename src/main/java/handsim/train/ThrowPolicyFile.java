@@ -85,7 +85,7 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * Why this policy cannot start a learner on {@code envs} (another task, object, state encoding
      * or throw box), or null when it can.
      */
-    public String mismatch(ThrowEnvs envs) {
+    public String mismatch(ThrowEnvFactory envs) {
         return !task.equals(envs.task()) || !object.equals(envs.object().name())
                 ? "was trained for the " + task + " task with a " + object + ", this run is the " + envs.task()
                         + " task with a " + envs.object().name()

@@ -2,18 +2,18 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
-import handsim.learn.TrainingConfig;
+import handsim.learn.LearnerConfig;
 import handsim.task.StateVector;
 import java.nio.file.Path;
 
 /**
  * A training run's configuration ({@code configs/train/*.json}): the {@code run} section says
- * what is trained, every other section is the learner's ({@link TrainingConfig}, documented in
+ * what is trained, every other section is the learner's ({@link LearnerConfig}, documented in
  * {@code configs/train/README.md}).
  *
  * @param learner DDPG, exploration, training budget, pretraining and CMA-ES settings, and the root seed
  */
-public record TrainConfig(Run run, TrainingConfig learner) {
+public record TrainConfig(Run run, LearnerConfig learner) {
 
     /**
      * What to train and how to run it.
@@ -59,7 +59,7 @@ public record TrainConfig(Run run, TrainingConfig learner) {
         Run run = Run.parse(j.get("run"));
         ObjectNode rest = ((ObjectNode) j.node()).deepCopy();
         rest.remove("run");
-        return new TrainConfig(run, TrainingConfig.parse(Json.of(j.source(), rest)));
+        return new TrainConfig(run, LearnerConfig.parse(Json.of(j.source(), rest)));
     }
 
     /** This configuration in the file's format ({@code parse(toJson())} gives it back). */

@@ -1,5 +1,7 @@
 package handsim.train;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.Checkpoints;
@@ -8,9 +10,9 @@ import handsim.learn.EpisodeStats;
 import handsim.learn.LearningCurves;
 import handsim.learn.MetricsCsv;
 import handsim.learn.Policy;
-import handsim.learn.Rollouts;
+import handsim.learn.EpisodePlayer;
 import handsim.learn.Trainer;
-import handsim.learn.TrainingConfig;
+import handsim.learn.LearnerConfig;
 import handsim.learn.TrainingListener;
 import handsim.report.Outputs;
 import java.io.IOException;
@@ -57,13 +59,13 @@ public final class TrainRun {
 
     private final Path dir;
     private final TrainConfig config;
-    private final ThrowEnvs envs;
-    private final handsim.rollout.Rollouts rollouts;
+    private final ThrowEnvFactory envs;
+    private final handsim.rollout.Rollouts<Simulator> rollouts;
     private final Trainer trainer;
     /** The command and commit that started the run (from run.json), written into every policy file. */
     private final ObjectNode startedBy;
 
-    private TrainRun(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, Trainer trainer) {
+    private TrainRun(Path dir, TrainConfig config, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts, Trainer trainer) {
         Json started = Json.load(dir.resolve(RUN_JSON));
         this.startedBy = Json.mapper().createObjectNode();
         for (String key : List.of("command", "commit")) {
@@ -82,7 +84,7 @@ public final class TrainRun {
      * A new run in {@code dir} (created; it must not hold a run already), with {@code provenance}
      * (seed, commit, command line) written to {@code run.json}.
      */
-    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
+    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts,
             ObjectNode provenance) throws IOException {
         return start(dir, config, envs, rollouts, provenance, null);
     }
@@ -93,7 +95,7 @@ public final class TrainRun {
      * policy ({@code initActor} a {@code .json} policy file, fine-tuned on this run's task and
      * physics), or from scratch when null. The dataset or policy is copied into the run.
      */
-    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvs envs, handsim.rollout.Rollouts rollouts,
+    public static TrainRun start(Path dir, TrainConfig config, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts,
             ObjectNode provenance, Path initActor) throws IOException {
         if (Files.exists(dir.resolve(CONFIG))) {
             throw new IllegalArgumentException(dir + " already holds a run (resume it with --resume " + dir + ")");
@@ -115,10 +117,10 @@ public final class TrainRun {
     }
 
     /** The trainer of a run's start: from scratch, with the actor fitted to the imitation data, or as a policy. */
-    private static Trainer freshTrainer(TrainConfig config, ThrowEnvs envs, double[][][] data, Policy policy) {
+    private static Trainer freshTrainer(TrainConfig config, ThrowEnvFactory envs, double[][][] data, Policy policy) {
         int n = envs.observationSize(), k = handsim.control.ThrowParameters.SIZE;
         if (policy != null) {
-            TrainingConfig l = config.learner();
+            LearnerConfig l = config.learner();
             DdpgAgent agent = Warmstart.seededAgent(l, n, k);
             agent.startActorFrom(policy, l.pretrain().policyObservations());
             return Trainer.withAgent(l, agent);
@@ -131,7 +133,7 @@ public final class TrainRun {
      * The actor of a throw policy file, checked against the run: the same task, object, state
      * encoding and throw space, and a set {@code pretrain.policyObservations}.
      */
-    private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvs envs) {
+    private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvFactory envs) {
         ThrowPolicyFile f = ThrowPolicyFile.load(file);
         String mismatch = f.mismatch(envs);
         if (mismatch != null) {
@@ -145,7 +147,7 @@ public final class TrainRun {
     }
 
     /** A warm-start dataset as (states, actions) sized for {@code envs}' observations and the throw parameters. */
-    private static double[][][] readDataset(Path file, ThrowEnvs envs) throws IOException {
+    private static double[][][] readDataset(Path file, ThrowEnvFactory envs) throws IOException {
         return Warmstart.readDataset(file, envs.observationSize(), handsim.control.ThrowParameters.SIZE);
     }
 
@@ -191,8 +193,8 @@ public final class TrainRun {
         return extended;
     }
 
-    /** {@link #resume(Path, ThrowEnvs, handsim.rollout.Rollouts, boolean, Consumer)} without fallback, notes to standard error. */
-    public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts) throws IOException {
+    /** {@link #resume(Path, ThrowEnvFactory, handsim.rollout.Rollouts, boolean, Consumer)} without fallback, notes to standard error. */
+    public static TrainRun resume(Path dir, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts) throws IOException {
         return resume(dir, envs, rollouts, false, System.err::println);
     }
 
@@ -209,7 +211,7 @@ public final class TrainRun {
      * {@code "fallbacks"}. Leftovers of a killed write are deleted; {@code notes} hears what was
      * done.
      */
-    public static TrainRun resume(Path dir, ThrowEnvs envs, handsim.rollout.Rollouts rollouts, boolean fromSnapshot,
+    public static TrainRun resume(Path dir, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts, boolean fromSnapshot,
             Consumer<String> notes) throws IOException {
         TrainConfig config = savedConfig(dir);
         String problem;
@@ -250,7 +252,7 @@ public final class TrainRun {
     }
 
     /** The learner of a run's first episode: as {@link #start} made it, from the dataset or policy copied into the run. */
-    private static Trainer initialTrainer(Path dir, TrainConfig config, ThrowEnvs envs) throws IOException {
+    private static Trainer initialTrainer(Path dir, TrainConfig config, ThrowEnvFactory envs) throws IOException {
         Path dataset = dir.resolve(INIT_DATASET);
         Path policy = dir.resolve(INIT_POLICY);
         return freshTrainer(config, envs, Files.isRegularFile(dataset) ? readDataset(dataset, envs) : null,
@@ -326,10 +328,10 @@ public final class TrainRun {
     }
 
     /** A round's episodes on the rollout workers, each playing on an environment over its own simulator. */
-    private List<Rollouts.Episode> play(Policy snapshot, List<Rollouts.Request> requests) {
+    private List<EpisodePlayer.Episode> play(Policy snapshot, List<EpisodePlayer.Request> requests) {
         return rollouts.run(requests.size(), sim -> {
             ThrowEnv env = envs.create(sim);
-            return i -> Rollouts.play(env, requests.get(i), snapshot::act, config.learner().exploration(), t -> { });
+            return i -> EpisodePlayer.play(env, requests.get(i), snapshot::act, config.learner().exploration(), t -> { });
         });
     }
 

@@ -1,5 +1,7 @@
 package handsim.train;
 
+import handsim.sim.Simulator;
+
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.ActorPretraining;
@@ -7,7 +9,7 @@ import handsim.learn.Cmaes;
 import handsim.learn.DdpgAgent;
 import handsim.learn.Env;
 import handsim.learn.Policy;
-import handsim.learn.TrainingConfig;
+import handsim.learn.LearnerConfig;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.rollout.Rollouts;
@@ -82,8 +84,8 @@ public final class Warmstart {
      * Searches every initial condition on the rollout workers, starting each search from the
      * task's nominal throw; results in seed order, printed as they come.
      */
-    public static List<Search> search(Config c, ThrowEnvs envs, double[] nominalAction, Rollouts rollouts, PrintStream out) {
-        TrainingConfig.Cmaes cm = c.train().learner().cmaes();
+    public static List<Search> search(Config c, ThrowEnvFactory envs, double[] nominalAction, Rollouts<Simulator> rollouts, PrintStream out) {
+        LearnerConfig.Cmaes cm = c.train().learner().cmaes();
         int n = c.warmstart().initialConditions();
         double[] lower = new double[nominalAction.length], upper = new double[nominalAction.length], sigma = new double[nominalAction.length];
         Arrays.fill(lower, -1);
@@ -167,7 +169,7 @@ public final class Warmstart {
      */
     public static DdpgAgent pretrainedAgent(TrainConfig c, int stateSize, int actionSize, double[][][] data,
             ActorPretraining.Result[] result) {
-        TrainingConfig l = c.learner();
+        LearnerConfig l = c.learner();
         DdpgAgent agent = seededAgent(l, stateSize, actionSize);
         ActorPretraining.Result r = ActorPretraining.fit(agent, data[0], data[1], l.pretrain(), l.seed());
         if (result != null) {
@@ -180,7 +182,7 @@ public final class Warmstart {
      * A fresh agent as {@link handsim.learn.Trainer#create} makes it (the root seed's first draw),
      * so a warm-started or fine-tuning run differs from a cold one by its actor's start alone.
      */
-    static DdpgAgent seededAgent(TrainingConfig l, int stateSize, int actionSize) {
+    static DdpgAgent seededAgent(LearnerConfig l, int stateSize, int actionSize) {
         return DdpgAgent.create(l.ddpg(), stateSize, actionSize, new handsim.learn.Rng(l.seed()).nextLong());
     }
 
@@ -197,7 +199,7 @@ public final class Warmstart {
     }
 
     /** The pretrained actor as a throw policy file. */
-    public static ThrowPolicyFile policyFile(DdpgAgent agent, TrainConfig c, ThrowEnvs envs, ObjectNode provenance) {
+    public static ThrowPolicyFile policyFile(DdpgAgent agent, TrainConfig c, ThrowEnvFactory envs, ObjectNode provenance) {
         Policy actor = agent.policy("pretrained on the warm-start dataset (" + c.run().task() + ", " + c.run().object() + ")",
                 "ThrowSpace, see throwSpace");
         return new ThrowPolicyFile(c.run().task(), c.run().object(), envs.state().encoding(), envs.space(), actor, provenance);

@@ -3,7 +3,7 @@ package handsim.viewer;
 import handsim.export.ExportOptions;
 import handsim.export.ExportTarget;
 import handsim.export.MotionRecorder;
-import handsim.live.LiveFrame;
+import handsim.scene.LiveFrame;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Optional;

@@ -3,8 +3,8 @@ package handsim.viewer;
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
 
-import handsim.live.LiveFrame;
-import handsim.live.LiveRun;
+import handsim.scene.LiveFrame;
+import handsim.scene.LiveRun;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.ByteBuffer;

@@ -2,7 +2,7 @@ package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
 
-import handsim.task.SceneCommand;
+import handsim.scene.SceneCommand;
 
 /**
  * Everything a key does in the viewer, with its key and the line the help panel shows. Actions

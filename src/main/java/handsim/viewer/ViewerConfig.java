@@ -28,7 +28,7 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benc
             double maxDistance, double orbitPerPixel, double panPerPixel, double zoomPerScroll, double followRate) {
     }
 
-    /** The sim-time accumulator (see {@link handsim.live.SimClock}) and the slow-motion speeds, real time first. */
+    /** The sim-time accumulator (see {@link handsim.scene.SimClock}) and the slow-motion speeds, real time first. */
     public record Pacing(double maxLagSeconds, double minChunkSeconds, double maxChunkSeconds, double singleStepSeconds,
             List<Double> slowMotion) {
         public Pacing {

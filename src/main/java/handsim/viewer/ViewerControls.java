@@ -2,7 +2,7 @@ package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
 
-import handsim.live.LiveRun;
+import handsim.scene.LiveRun;
 import java.util.List;
 
 /**

@@ -6,21 +6,23 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import handsim.config.Json;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
-import handsim.task.InteractiveScene;
-import handsim.task.SceneCatalog;
-import handsim.task.SceneSetup;
+import handsim.scene.InteractiveScene;
+import handsim.scene.SceneCatalog;
+import handsim.scene.SceneSetup;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The demo's headless path end to end, and the viewer's scene wiring and its fallbacks. */
+@Tag("slow")
 class CommandsTest {
 
     @Test

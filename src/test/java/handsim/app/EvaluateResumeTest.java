@@ -1,5 +1,7 @@
 package handsim.app;
 
+import handsim.evaluation.ResultJson;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -18,10 +20,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** evaluate's per-episode resume: a run killed half-way, run again, ends as an uninterrupted run; and its provenance. */
+@Tag("slow")
 class EvaluateResumeTest {
 
     @Test

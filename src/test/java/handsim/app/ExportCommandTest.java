@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
  * nothing else left in the folder; a malformed request refused with one line on stderr and exit
  * status 2, before anything is simulated, leaving no file.
  */
+@Tag("slow")
 class ExportCommandTest {
 
     record Result(int code, String out, String err) {

@@ -14,11 +14,11 @@ import handsim.config.Json;
 import handsim.model.ModelLoader;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
-import handsim.task.InteractiveScene;
-import handsim.task.SceneSetup;
+import handsim.scene.InteractiveScene;
+import handsim.scene.SceneSetup;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -32,6 +32,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -41,6 +42,7 @@ import org.junit.jupiter.api.io.TempDir;
  * diverges; an object no hand catches. Each case asserts the exit status, the one-line message
  * and the files left behind (training runs: {@link FaultInjectionTrainingTest}).
  */
+@Tag("slow")
 class FaultInjectionTest {
 
     @TempDir

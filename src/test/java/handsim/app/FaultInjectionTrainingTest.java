@@ -26,6 +26,7 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipInputStream;
 import java.util.zip.ZipOutputStream;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -36,6 +37,7 @@ import org.junit.jupiter.api.io.TempDir;
  * of one throw, a checkpoint after every episode); training is deterministic, so a run
  * that resumed ends exactly (bit for bit) like the uninterrupted {@link #reference} run.
  */
+@Tag("slow")
 class FaultInjectionTrainingTest {
 
     private static final String[] TINY = {"--set", "training.episodes=3", "--set", "training.parallelEpisodes=1",

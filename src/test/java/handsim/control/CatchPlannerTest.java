@@ -9,9 +9,11 @@ import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Catch planning (sec. 3.6) against launches whose interception is known by construction. */
+@Tag("fast")
 class CatchPlannerTest {
 
     static final Vec3 GRAVITY = new Vec3(0, -9.81, 0);

@@ -10,9 +10,11 @@ import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.math.Vec3;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The controller config's per-object grasps: lookup, and errors that name the field. */
+@Tag("fast")
 class ControllerConfigTest {
 
     private static ObjectNode shipped() {
@@ -52,7 +54,7 @@ class ControllerConfigTest {
         ((ObjectNode) node.get("grasps").get("can")).put("closedPose", "fist");
         ControllerConfig config = parse(node);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new NominalController(
-                TestSupport.model(), config, TestSupport.object("can"), obs -> null, new Vec3(0, -9.81, 0)));
+                TestSupport.model(), config, TestSupport.object("can"), new Vec3(0, -9.81, 0)));
         assertTrue(e.getMessage().contains("grasp of can") && e.getMessage().contains("fist"), e.getMessage());
     }
 }

@@ -12,9 +12,11 @@ import handsim.model.Dof;
 import handsim.model.HandModel;
 import handsim.model.Site;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Damped least squares IK (eq. 2) on the shipped model, with the shipped IK settings. */
+@Tag("fast")
 class DlsIkTest {
 
     /** Reachable palm targets are reached within 1 mm and 1 degree. */

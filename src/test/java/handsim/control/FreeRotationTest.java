@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.model.Inertia;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Torque-free rotation against the closed-form motions of a round body and a symmetric top. */
+@Tag("fast")
 class FreeRotationTest {
 
     @Test

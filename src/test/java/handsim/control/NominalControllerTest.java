@@ -16,13 +16,14 @@ import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * The FSM of the nominal controller without any physics: the joints follow the targets exactly
  * (perfect tracking), the object flies ballistically, and contact is whatever the test says.
  */
+@Tag("fast")
 class NominalControllerTest {
 
     static final Vec3 GRAVITY = new Vec3(0, -9.81, 0);
@@ -30,8 +31,9 @@ class NominalControllerTest {
     private final ControllerConfig config = ControllerConfig.load(Home.resolve("configs/controller.json"));
     private final double tick = config.periodSteps() * TestSupport.simConfig().timeStep();
     private final Kinematics kin = new Kinematics(model);
-    private final NominalController controller = new NominalController(model, config, TestSupport.object("sphere"),
-            obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
+    private final NominalController controller = new NominalController(model, config, TestSupport.object("sphere"), GRAVITY);
+    /** Every throw of these tests: the nominal one for a 1.2 m apex, caught as the config says. */
+    private final ThrowDecision nominal = ThrowDecision.of(config.nominalThrows().forHeight(1.2));
     private final RigidState launch = RigidState.at(new Vec3(0.05, 1.2, 1.2), new Vec3(0, 1.0, -1.3));
 
     @Test
@@ -43,7 +45,7 @@ class NominalControllerTest {
         began.put(Phase.CATCH, 0.0);
         Phase last = Phase.CATCH;
         for (double t = tick; order.size() < 5; t += tick) {
-            controller.update(observe(t, s.targets().clone(), false), s);
+            advance(controller, observe(t, s.targets().clone(), false), s, nominal);
             if (s.phase() != last) {
                 order.add(s.phase());
                 began.putIfAbsent(s.phase(), t);
@@ -63,11 +65,11 @@ class NominalControllerTest {
         assertEquals(HandPose.OPEN, s.handPose(), "CATCH opens the hand");
         double t = tick;
         for (int i = 0; i < 20; i++, t += tick) {
-            controller.update(observe(t, s.targets().clone(), false), s);
+            advance(controller, observe(t, s.targets().clone(), false), s, nominal);
         }
         assertEquals(Phase.CATCH, s.phase());
         assertEquals(HandPose.OPEN, s.handPose(), "no contact: the hand stays open");
-        controller.update(observe(t, s.targets().clone(), true), s);
+        advance(controller, observe(t, s.targets().clone(), true), s, nominal);
         assertEquals(HandPose.CLOSED, s.handPose(), "first contact closes the hand (sec. 3.1)");
         assertTrue(s.closedOnContact());
         // the finger targets move from open toward closed over closeTime
@@ -80,10 +82,10 @@ class NominalControllerTest {
         ControllerState s = controller.start(observe(0, model.poseVector("neutral"), false));
         double t = tick;
         while (s.phase() != Phase.GOBACK) {
-            controller.update(observe(t, s.targets().clone(), false), s);
+            advance(controller, observe(t, s.targets().clone(), false), s, nominal);
             t += tick;
         }
-        controller.update(observe(t, s.targets().clone(), true), s);
+        advance(controller, observe(t, s.targets().clone(), true), s, nominal);
         assertFalse(s.closedOnContact(), "a touch while going back is not a catch");
         assertEquals(HandPose.NEUTRAL, s.handPose());
     }
@@ -99,8 +101,7 @@ class NominalControllerTest {
         // the release of ClosedLoopRelease: THROW ends once the can would turn 270 deg in flight
         // (not before 0.05 s), and runs up to 0.04 s past its duration while it would turn less
         ClosedLoopRelease release = new ClosedLoopRelease(Math.toRadians(270), 0.05, 0.04);
-        NominalController withRelease = new NominalController(model, config.withRelease(release), TestSupport.object("can"),
-                obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
+        NominalController withRelease = new NominalController(model, config.withRelease(release), TestSupport.object("can"), GRAVITY);
         // rising at 3 m/s from 1.0 m, the can comes down through the 0.72 m interception plane
         // after 0.69 s: turning end over end at 20 rad/s it would turn some 800 deg, at rest not at all
         RigidState spinning = new RigidState(new Vec3(0.05, 1.0, 0.5), Quat.IDENTITY, new Vec3(0, 3, 0), new Vec3(20, 0, 0));
@@ -111,9 +112,9 @@ class NominalControllerTest {
     }
 
     @Test
-    void theCatchAfterAThrowMeetsTheObjectAsTheTaskOrTheThrowPolicySays() {
+    void theCatchAfterAThrowMeetsTheObjectAsTheTaskOrTheDecisionSays() {
         NominalController taskCatch = new NominalController(model, config.withCatchAfterThrow(new CatchStyle(0.1, 0.45)),
-                TestSupport.object("sphere"), obs -> config.nominalThrows().forHeight(1.2), GRAVITY);
+                TestSupport.object("sphere"), GRAVITY);
         CatchPlanner.Plan throwIn = taskCatch.start(observe(0, model.poseVector("neutral"), false)).plan();
         assertEquals(config.catchVelocityFraction(), throwIn.palmVelocity().y() / throwIn.objectVelocity().y(), 1e-9,
                 "the throw-in is caught as the controller's own (sec. 3.6: 70 %)");
@@ -121,33 +122,30 @@ class NominalControllerTest {
                 .plan();
         assertEquals(config.interceptionHeight() - 0.05, styledThrowIn.objectPosition().y(), 1e-9, "a throw-in style of its own");
         assertEquals(0.4, styledThrowIn.palmVelocity().y() / styledThrowIn.objectVelocity().y(), 1e-9);
-        CatchPlanner.Plan afterThrow = catchAfterThrow(taskCatch);
+        CatchPlanner.Plan afterThrow = catchAfterThrow(taskCatch, nominal);
         assertEquals(config.interceptionHeight() + 0.1, afterThrow.objectPosition().y(), 1e-9, "met on the raised plane");
         assertEquals(0.45, afterThrow.palmVelocity().y() / afterThrow.objectVelocity().y(), 1e-9);
 
-        ThrowPolicy choosing = new ThrowPolicy() {
-            @Override
-            public ThrowParameters decide(Observation observation) {
-                return config.nominalThrows().forHeight(1.2);
-            }
-
-            @Override
-            public Optional<CatchStyle> catchAfterThrow() {
-                return Optional.of(new CatchStyle(-0.05, 0.3));
-            }
-        };
-        NominalController policyCatch = new NominalController(model, config.withCatchAfterThrow(new CatchStyle(0.1, 0.45)),
-                TestSupport.object("sphere"), choosing, GRAVITY);
-        CatchPlanner.Plan chosen = catchAfterThrow(policyCatch);
-        assertEquals(config.interceptionHeight() - 0.05, chosen.objectPosition().y(), 1e-9, "the policy's choice wins");
+        ThrowDecision choosing = new ThrowDecision(config.nominalThrows().forHeight(1.2), new CatchStyle(-0.05, 0.3));
+        CatchPlanner.Plan chosen = catchAfterThrow(taskCatch, choosing);
+        assertEquals(config.interceptionHeight() - 0.05, chosen.objectPosition().y(), 1e-9, "the decision's choice wins");
         assertEquals(0.3, chosen.palmVelocity().y() / chosen.objectVelocity().y(), 1e-9);
+    }
+
+    /** One tick of the controller: at a throw's decision the throw {@code thrown} begins. */
+    private static void advance(NominalController c, Observation o, ControllerState s, ThrowDecision thrown) {
+        if (c.throwDue(o, s)) {
+            c.beginThrow(o, s, thrown);
+        } else {
+            c.update(o, s);
+        }
     }
 
     /**
      * The plan of the CATCH that follows the first THROW: the launched sphere flies as {@link
      * #observe} has it until the first catch ends, then rises at 3 m/s from 1 m (as if thrown).
      */
-    private CatchPlanner.Plan catchAfterThrow(NominalController c) {
+    private CatchPlanner.Plan catchAfterThrow(NominalController c, ThrowDecision decision) {
         RigidState rising = RigidState.at(new Vec3(0.05, 1.0, 0.5), new Vec3(0, 3, 0));
         ControllerState s = c.start(observe(0, model.poseVector("neutral"), false));
         double t = tick;
@@ -155,7 +153,7 @@ class NominalControllerTest {
         boolean thrown = false;
         while (!(thrown && s.phase() == Phase.CATCH)) {
             Observation o = observe(t, s.targets().clone(), false);
-            c.update(caught ? new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), rising, 0) : o, s);
+            advance(c, caught ? new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), rising, 0) : o, s, decision);
             caught |= s.phase() != Phase.CATCH;
             thrown |= s.phase() == Phase.THROW;
             t += tick;
@@ -168,13 +166,13 @@ class NominalControllerTest {
         ControllerState s = c.start(observe(0, model.poseVector("neutral"), false));
         double t = tick;
         while (s.phase() != Phase.THROW) {
-            c.update(observe(t, s.targets().clone(), false), s);
+            advance(c, observe(t, s.targets().clone(), false), s, nominal);
             t += tick;
         }
         double began = t - tick;
         while (s.phase() == Phase.THROW) {
             Observation o = observe(t, s.targets().clone(), false);
-            c.update(new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), object, 0), s);
+            advance(c, new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), object, 0), s, nominal);
             t += tick;
         }
         return t - tick - began;

@@ -6,9 +6,11 @@ import handsim.kin.Frame;
 import handsim.math.Hermite;
 import handsim.math.Quat;
 import handsim.math.Vec3;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** A THROW held open by a closed-loop release goes on past its curve as it ended. */
+@Tag("fast")
 class PalmTrajectoryTest {
 
     private final Quat start = Quat.IDENTITY;

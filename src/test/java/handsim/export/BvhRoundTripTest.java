@@ -22,6 +22,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -30,6 +31,7 @@ import org.junit.jupiter.api.io.TempDir;
  * simulator's joint angles at every sample, the object's root gives the object's pose, and a
  * frame of zero angles puts every joint where {@code handsim info --pose zero} says.
  */
+@Tag("slow")
 class BvhRoundTripTest {
 
     /** 1e-6 rad (the bound); the file holds degrees to 6 decimals, 1.7e-8 rad. */

@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import handsim.TestSupport;
 import handsim.math.Quat;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Euler angles in all six orders of three distinct axes: splitting a rotation and composing it again gives it back. */
+@Tag("fast")
 class EulerTest {
 
     @Test

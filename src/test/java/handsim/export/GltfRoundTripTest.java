@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Optional;
 import handsim.model.Shape;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -23,6 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
  * simulated world transforms of every body and of the object at every sample, and its node tree
  * is the model's body tree at the model's rest offsets.
  */
+@Tag("slow")
 class GltfRoundTripTest {
 
     /**

@@ -20,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
  * of two sizes over a reset, the floor, the goal plane and the camera, as .glb and as .gltf + .bin.
  */
 @Tag("browser")
+@Tag("slow")
 class GltfValidatorTest {
 
     @Test

@@ -23,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
  * simulated frames and projected by the viewer's camera ({@link PartMasks}).
  */
 @Tag("browser")
+@Tag("slow")
 class GltfViewerBrowserTest {
 
     static final int WIDTH = 480, HEIGHT = 360;

@@ -12,9 +12,11 @@ import handsim.task.Goal;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The recorder's clock: one sample per 1 / rate simulated seconds from the first, carried on over resets. */
+@Tag("fast")
 class MotionRecorderTest {
 
     static final HandModel MODEL = TestSupport.model();

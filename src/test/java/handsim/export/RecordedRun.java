@@ -3,8 +3,8 @@ package handsim.export;
 import handsim.TestSupport;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchLoopScene;
-import handsim.task.SceneCommand;
+import handsim.scene.CatchLoopScene;
+import handsim.scene.SceneCommand;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -8,12 +8,14 @@ import handsim.math.Quat;
 import handsim.model.HandModel;
 import handsim.model.Site;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * The allocation-free forms (caller-owned buffers, primitive quaternions) compute the same
  * arithmetic as the Frame/Quat forms: the results are equal to the last bit.
  */
+@Tag("fast")
 class KinematicsBuffersTest {
 
     private final HandModel m = TestSupport.model();

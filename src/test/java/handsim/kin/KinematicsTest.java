@@ -9,8 +9,10 @@ import handsim.model.HandModel;
 import handsim.model.Joint;
 import handsim.model.Site;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class KinematicsTest {
 
     private final HandModel m = TestSupport.model();

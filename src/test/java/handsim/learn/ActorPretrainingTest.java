@@ -5,8 +5,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("slow")
 class ActorPretrainingTest {
 
     @Test
@@ -19,7 +21,7 @@ class ActorPretrainingTest {
             obs[i] = new double[] {rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)};
             actions[i] = ToyEnvs.GoalReaching.best(obs[i][0], obs[i][1]);
         }
-        TrainingConfig c = LearnTestSupport.config("pretrain.epochs", "60", "pretrain.validationFraction", "0.25",
+        LearnerConfig c = LearnTestSupport.config("pretrain.epochs", "60", "pretrain.validationFraction", "0.25",
                 "ddpg.batchSize", "8", "exploration.warmupSteps", "0", "exploration.sigma", "0.02", "training.episodes", "3");
         DdpgAgent agent = DdpgAgent.create(c.ddpg(), 4, 3, 1);
         long t0 = System.nanoTime();
@@ -44,7 +46,7 @@ class ActorPretrainingTest {
         // DDPG starts from it
         Trainer t = Trainer.withAgent(c, agent);
         List<EpisodeStats> stats = new java.util.ArrayList<>();
-        t.train(List.of(new ToyEnvs.GoalReaching(5)), null, stats::add, null);
+        t.train(new ToyEnvs.GoalReaching(5), null, stats::add, null);
         assertEquals(3, stats.size());
         assertTrue(stats.get(0).reward() / 5 > 0.2, "the first episodes already use the pretrained actor: " + stats.get(0));
         assertTrue(t.agent().updates() > 0);

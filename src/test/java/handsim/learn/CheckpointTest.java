@@ -11,13 +11,15 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+@Tag("fast")
 class CheckpointTest {
 
     /** A short run that updates from its second episode on. */
-    private static TrainingConfig config(String... more) {
+    private static LearnerConfig config(String... more) {
         List<String> kv = new ArrayList<>(List.of("seed", "7", "ddpg.batchSize", "16", "exploration.warmupSteps", "20",
                 "exploration.noise", "\"ou\"", "exploration.sigmaDecaySteps", "100", "training.episodes", "8",
                 "training.movingAverageWindow", "3", "training.checkpointEveryEpisodes", "4"));
@@ -37,14 +39,14 @@ class CheckpointTest {
                 "{\"twinCritics\": true, \"policyDelay\": 2, \"targetNoise\": 0.2, \"targetNoiseClip\": 0.5}"));
     }
 
-    private static void resumesExactly(Path dir, TrainingConfig config) throws IOException {
+    private static void resumesExactly(Path dir, LearnerConfig config) throws IOException {
         Env env = new ToyEnvs.GoalReaching(5);
         Path ckpt = dir.resolve("checkpoint.zip");
 
         // uninterrupted: 8 episodes; the checkpoint is written after episode 4 (and 8)
         List<EpisodeStats> straight = new ArrayList<>();
         Trainer a = Trainer.create(config, 4, 3);
-        a.train(List.of(env), null, straight::add, null);
+        a.train(env, null, straight::add, null);
         Trainer b = Trainer.create(config, 4, 3);
         for (int e = 0; e < 4; e++) {
             b.runEpisode(env, s -> { });
@@ -62,7 +64,7 @@ class CheckpointTest {
         assertEquals(b.agent().replaySize(), resumed.agent().replaySize());
 
         List<EpisodeStats> continued = new ArrayList<>();
-        resumed.train(List.of(env), null, continued::add, null);
+        resumed.train(env, null, continued::add, null);
         assertEquals(4, continued.size());
         assertTrue(continued.get(3).updates() > 0, "the continuation must include updates to test anything");
         for (int i = 0; i < 4; i++) {

@@ -70,13 +70,13 @@ class DaggerTest {
     }
 
     private static DaggerConfig config(int rounds, boolean executeLabel) {
-        TrainingConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "40", "pretrain.batchSize", "32",
+        LearnerConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "40", "pretrain.batchSize", "32",
                 "pretrain.validationFraction", "0.1");
         return new DaggerConfig(7, rounds, 20, 10, executeLabel, DaggerConfig.Weighting.UNIFORM, 0, DaggerConfig.Refit.FRESH, t.ddpg(), t.pretrain());
     }
 
     /** Plays the requests one after another on one environment. */
-    private static Dagger.EpisodePlayer on(Window env) {
+    private static Dagger.RoundPlayer on(Window env) {
         return (actor, requests) -> requests.stream().map(r -> Dagger.play(env, r, actor)).toList();
     }
 
@@ -125,7 +125,7 @@ class DaggerTest {
 
     @Test
     void labelsLessRobustThanTheFloorAreLeftOutAndRobustOnesWeighMore() {
-        TrainingConfig t = LearnTestSupport.config("pretrain.epochs", "5");
+        LearnerConfig t = LearnTestSupport.config("pretrain.epochs", "5");
         DaggerConfig c = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.ROBUSTNESS, 0.5, DaggerConfig.Refit.FRESH, t.ddpg(), t.pretrain());
         List<Dagger.Visit> visits = new ArrayList<>();
         for (int i = 0; i < 10; i++) {
@@ -142,7 +142,7 @@ class DaggerTest {
     void aContinuedFitKeepsTheActorItStartsFromWhereTheLabelsAgreeWithIt() {
         // labels that are the start actor's own actions: a continued fit stays near it, a fresh fit of
         // as few steps is far from it (it starts from near-zero outputs, finalLayerInit)
-        TrainingConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "3", "pretrain.validationFraction", "0",
+        LearnerConfig t = LearnTestSupport.config("ddpg.actorHidden", "[16, 16]", "pretrain.epochs", "3", "pretrain.validationFraction", "0",
                 "pretrain.policyObservations", "10000");
         DaggerConfig fresh = new DaggerConfig(1, 1, 1, 1, true, DaggerConfig.Weighting.UNIFORM, 0, DaggerConfig.Refit.FRESH, t.ddpg(),
                 t.pretrain());

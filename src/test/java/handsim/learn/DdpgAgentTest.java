@@ -6,10 +6,12 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.nd4j.linalg.api.ndarray.INDArray;
 import org.nd4j.linalg.factory.Nd4j;
 
+@Tag("slow")
 class DdpgAgentTest {
 
     @Test
@@ -118,7 +120,7 @@ class DdpgAgentTest {
 
     @Test
     void optionalL2AndClippingReachTheNetworks() {
-        TrainingConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
+        LearnerConfig.Ddpg c = LearnTestSupport.config("ddpg.criticL2", "0.01", "ddpg.gradientClip", "5",
                 "ddpg.actorHidden", "[32]").ddpg();
         DdpgAgent agent = DdpgAgent.create(c, 3, 2, 1);
         var criticLayer = (org.deeplearning4j.nn.conf.layers.BaseLayer) agent.critic.getLayerWiseConfigurations()

@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** DDPG on toy problems without physics, each with a known optimum (ToyEnvs). */
+@Tag("slow")
 class DdpgToyTest {
 
     /** The shared learner settings of the toy runs: faster rates than the defaults, for ~10^3-update budgets. */
@@ -15,7 +17,7 @@ class DdpgToyTest {
             "0.005", "ddpg.tau", "0.1", "exploration.sigma", "0.1", "exploration.sigmaFinal", "0.02",
             "exploration.sigmaDecaySteps", "1500"};
 
-    private static TrainingConfig config(String... more) {
+    private static LearnerConfig config(String... more) {
         String[] all = new String[FAST.length + more.length];
         System.arraycopy(FAST, 0, all, 0, FAST.length);
         System.arraycopy(more, 0, all, FAST.length, more.length);
@@ -28,10 +30,10 @@ class DdpgToyTest {
 
     @Test
     void reachesGoalsLikeTheThrowTask() throws Exception {
-        TrainingConfig c = config("ddpg.gamma", "0.3", "training.episodes", "400");
+        LearnerConfig c = config("ddpg.gamma", "0.3", "training.episodes", "400");
         Trainer t = Trainer.create(c, 4, 3);
         long t0 = System.nanoTime(), cpu0 = cpuNanos();
-        t.train(List.of(new ToyEnvs.GoalReaching(5)), null, s -> { }, null);
+        t.train(new ToyEnvs.GoalReaching(5), null, s -> { }, null);
         double seconds = (System.nanoTime() - t0) * 1e-9, cpuSeconds = (cpuNanos() - cpu0) * 1e-9;
         double reward = LearnTestSupport.meanReward(new ToyEnvs.GoalReaching(5), t.agent().policy("toy", ""), 100, 1234);
         System.out.printf("goal reaching: mean reward %.3f of max 1 after %d decisions, %d updates, %.1f s (%.1f s CPU)%n",
@@ -44,10 +46,10 @@ class DdpgToyTest {
 
     @Test
     void bootstrapsAcrossCutOffsAndAvoidsRealEnds() throws Exception {
-        TrainingConfig c = config("ddpg.gamma", "0.9", "training.episodes", "150");
+        LearnerConfig c = config("ddpg.gamma", "0.9", "training.episodes", "150");
         Trainer t = Trainer.create(c, 1, 1);
         List<EpisodeStats> stats = new ArrayList<>();
-        t.train(List.of(new ToyEnvs.Cliff(10)), null, stats::add, null);
+        t.train(new ToyEnvs.Cliff(10), null, stats::add, null);
 
         Policy p = t.agent().policy("cliff", "");
         double q0 = stats.subList(stats.size() - 10, stats.size()).stream().mapToDouble(EpisodeStats::q0).average().orElseThrow();
@@ -56,7 +58,7 @@ class DdpgToyTest {
         double reward = 0;
         int decisions = 0;
         for (int e = 0; e < 20; e++) {
-            Rollouts.Episode ep = Rollouts.play(new ToyEnvs.Cliff(10), new Rollouts.Request(seeds.nextLong(), 0, 0, false, 100),
+            EpisodePlayer.Episode ep = EpisodePlayer.play(new ToyEnvs.Cliff(10), new EpisodePlayer.Request(seeds.nextLong(), 0, 0, false, 100),
                     p::act, c.exploration(), x -> { });
             ends += ep.terminal() ? 1 : 0;
             reward += ep.reward();

@@ -12,13 +12,13 @@ final class LearnTestSupport {
     }
 
     /** {@code configs/train/ddpg-defaults.json} with overrides given as "path", "value" pairs. */
-    static TrainingConfig config(String... keyValues) {
+    static LearnerConfig config(String... keyValues) {
         Map<String, String> overrides = new LinkedHashMap<>();
         for (int i = 0; i < keyValues.length; i += 2) {
             overrides.put(keyValues[i], keyValues[i + 1]);
         }
         Json defaults = Json.load(Home.resolve("configs/train/ddpg-defaults.json"));
-        return TrainingConfig.parse(Json.of("test config", Json.withOverrides("test config", defaults.node(), overrides)));
+        return LearnerConfig.parse(Json.of("test config", Json.withOverrides("test config", defaults.node(), overrides)));
     }
 
     /** Mean reward per decision of the deterministic policy over {@code episodes} fresh episodes. */
@@ -27,7 +27,7 @@ final class LearnTestSupport {
         int n = 0;
         Rng seeds = new Rng(seed);
         for (int e = 0; e < episodes; e++) {
-            Rollouts.Episode ep = Rollouts.play(env, new Rollouts.Request(seeds.nextLong(), 0, 0, false, 1000), policy::act,
+            EpisodePlayer.Episode ep = EpisodePlayer.play(env, new EpisodePlayer.Request(seeds.nextLong(), 0, 0, false, 1000), policy::act,
                     config().exploration(), t -> { });
             sum += ep.reward();
             n += ep.transitions().size();

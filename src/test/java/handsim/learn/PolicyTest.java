@@ -14,9 +14,11 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+@Tag("slow")
 class PolicyTest {
 
     /** An agent whose actor has moved off its initialisation and whose normaliser has statistics. */
@@ -25,7 +27,7 @@ class PolicyTest {
     }
 
     /** An agent of config {@code c} after 20 updates on 64 random transitions. */
-    static DdpgAgent trainedAgent(TrainingConfig.Ddpg c, int obsSize, int actionSize, long seed) {
+    static DdpgAgent trainedAgent(LearnerConfig.Ddpg c, int obsSize, int actionSize, long seed) {
         DdpgAgent agent = DdpgAgent.create(c, obsSize, actionSize, seed);
         Rng rng = new Rng(seed);
         for (int i = 0; i < 64; i++) {

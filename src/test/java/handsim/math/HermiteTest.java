@@ -3,8 +3,10 @@ package handsim.math;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class HermiteTest {
 
     private final Hermite h = new Hermite(new Vec3(0.1, 0.6, 0.3), new Vec3(1, -2, 0.5), new Vec3(0.0, 0.9, 0.4),

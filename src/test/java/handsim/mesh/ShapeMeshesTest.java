@@ -9,6 +9,7 @@ import handsim.model.Shape;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -16,6 +17,7 @@ import org.junit.jupiter.api.Test;
  * two triangles turning opposite ways, every triangle's counter-clockwise normal points away
  * from the solid, and the enclosed volume (divergence theorem) is positive and near the shape's.
  */
+@Tag("fast")
 class ShapeMeshesTest {
 
     /** Shapes placed off the origin and tilted, so no axis-aligned luck hides a mistake. */

@@ -8,9 +8,11 @@ import handsim.kin.Frame;
 import handsim.kin.Kinematics;
 import handsim.math.Vec3;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The shipped model against the paper's and SPEC's figures (sources in models/arm_hand.json). */
+@Tag("fast")
 class ArmHandModelTest {
 
     private final HandModel m = TestSupport.model();

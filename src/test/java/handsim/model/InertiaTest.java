@@ -4,9 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import handsim.math.Quat;
 import handsim.math.Vec3;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The tensor's product with a vector and its inverse, on a full (rotated, off-diagonal) tensor. */
+@Tag("fast")
 class InertiaTest {
 
     @Test

@@ -10,9 +10,11 @@ import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
 import java.util.function.Consumer;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** A malformed or inconsistent model fails with a message naming the field and the bad value. */
+@Tag("slow")
 class ModelValidationTest {
 
     private static String failure(Consumer<ObjectNode> corrupt) {

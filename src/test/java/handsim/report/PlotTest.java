@@ -5,10 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The legend goes where it hides no data, and a chart is written as a PNG. */
+@Tag("fast")
 class PlotTest {
 
     private static final int LEGEND_W = 200, LEGEND_H = 46; // two labels

@@ -1,5 +1,7 @@
 package handsim.rollout;
 
+import handsim.sim.Simulator;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -11,16 +13,18 @@ import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
 import handsim.sim.SimConfig;
 import handsim.sim.ode.IsolatedEngine;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Parallel rollouts: same results whatever the number of workers, in index order. */
+@Tag("slow")
 class LocalRolloutsTest {
 
     private final HandModel model = TestSupport.model();
@@ -28,7 +32,7 @@ class LocalRolloutsTest {
 
     /** First catches of three seeded sphere episodes (about 1 s simulated each): one worker of two runs two. */
     private List<EpisodeResult> evaluate(int workers, List<Integer> order) {
-        try (Rollouts rollouts = new LocalRollouts(workers, () -> IsolatedEngine.simulator(model, config))) {
+        try (Rollouts<Simulator> rollouts = new LocalRollouts<>(workers, () -> IsolatedEngine.simulator(model, config))) {
             return rollouts.run(3, sim -> {
                 // per worker: the evaluation holds a goal sequence, so each worker has its own
                 CatchEvaluation evaluation = CatchEvaluation.nominal(
@@ -58,7 +62,7 @@ class LocalRolloutsTest {
 
     @Test
     void aFailingRolloutStopsTheRunAndIsRethrown() {
-        try (Rollouts rollouts = new LocalRollouts(2, () -> null)) {
+        try (Rollouts<Simulator> rollouts = new LocalRollouts<>(2, () -> null)) {
             IllegalStateException e = assertThrows(IllegalStateException.class, () -> rollouts.run(10, sim -> i -> {
                 if (i == 3) {
                     throw new IllegalStateException("rollout 3 failed");

@@ -13,12 +13,14 @@ import handsim.model.HandModel;
 import handsim.model.Site;
 import handsim.sim.ode.IsolatedEngine;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.HeldBallScenario;
+import handsim.scene.HeldBallScenario;
 import handsim.task.ServoLoop;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Small simulations with expectations derived from the model and the contact law. */
+@Tag("slow")
 class OdeSimulatorTest {
 
     private final HandModel m = TestSupport.model();

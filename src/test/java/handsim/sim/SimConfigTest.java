@@ -3,8 +3,10 @@ package handsim.sim;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import handsim.TestSupport;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class SimConfigTest {
 
     @Test

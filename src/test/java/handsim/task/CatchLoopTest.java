@@ -1,5 +1,7 @@
 package handsim.task;
 
+import handsim.evaluation.CatchEvaluation;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -20,6 +22,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -29,7 +32,8 @@ import org.junit.jupiter.params.provider.ValueSource;
  * configs/launch.json) is caught on its first arrival and thrown and caught again, and the
  * loop follows a recorded golden trajectory.
  */
-class CatchLoopTest {
+@Tag("slow")
+public class CatchLoopTest {
 
     static final long SEED = 1;
     static final Path GOLDEN = Path.of("src/test/resources/golden/sphere_seed1_loop.csv");
@@ -51,14 +55,15 @@ class CatchLoopTest {
         List<String> rows = new ArrayList<>();
         EpisodeResult result;
         try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
-            CatchThrowEpisode episode = evaluation().start(sim, SEED);
+            CatchEvaluation evaluation = evaluation();
+            CatchThrowEpisode episode = evaluation.start(sim, SEED);
             int ticks = 0;
             // first catch, then one throw and its catch: two loop records
             while (episode.status() == CatchThrowEpisode.Status.RUNNING && episode.loops().size() < 2) {
                 if (ticks++ % ROW_EVERY == 0) {
                     rows.add(row(episode));
                 }
-                episode.tick();
+                evaluation.tick(episode, SEED);
             }
             result = episode.result(SEED);
         }
@@ -134,7 +139,7 @@ class CatchLoopTest {
         }
     }
 
-    static CatchEvaluation evaluation() {
+    public static CatchEvaluation evaluation() {
         return evaluation("sphere");
     }
 
@@ -148,7 +153,7 @@ class CatchLoopTest {
     private static String row(CatchThrowEpisode e) {
         var obs = e.observe();
         Vec3 p = obs.palm().origin(), o = obs.object().position();
-        return String.format(Locale.ROOT, "%.4f,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", obs.time(), e.state().phase(),
+        return String.format(Locale.ROOT, "%.4f,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f", obs.time(), e.controllerState().phase(),
                 p.x(), p.y(), p.z(), o.x(), o.y(), o.z());
     }
 

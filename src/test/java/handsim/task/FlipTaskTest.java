@@ -17,6 +17,7 @@ import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
 import java.nio.file.Files;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -24,6 +25,7 @@ import org.junit.jupiter.api.Test;
  * end-over-end turn in flight (half turns for a can, whole turns for a club, 45 deg of tolerance
  * in the shipped configs/tasks/flip.json).
  */
+@Tag("fast")
 class FlipTaskTest {
 
     private final FlipTask can = (FlipTask) TestSupport.tasks().create("flip", "can");

@@ -11,8 +11,10 @@ import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.sim.RigidState;
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class StateVectorTest {
 
     private static final Vec3 CAN_AXIS = new Vec3(0, 0, 1);

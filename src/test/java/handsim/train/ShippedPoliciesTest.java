@@ -9,15 +9,16 @@ import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchEvaluation;
+import handsim.evaluation.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
-import handsim.task.HeightErrors;
+import handsim.evaluation.HeightErrors;
 import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 import handsim.task.ThrowTask;
 import java.nio.file.Path;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -25,6 +26,7 @@ import org.junit.jupiter.api.Test;
  * current simulator and controller. A change to the physics, the controller or the task that
  * the policy was trained on shows up here before it shows up in a long evaluation.
  */
+@Tag("slow")
 class ShippedPoliciesTest {
 
     /**

@@ -11,9 +11,11 @@ import handsim.config.Json;
 import handsim.task.LoopRecord;
 import java.nio.file.Path;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The training-only release-spin term of flip runs, and how a run config gives it. */
+@Tag("fast")
 class SpinShapingTest {
 
     private static LoopRecord leavingAt(double spin) {

@@ -16,14 +16,16 @@ import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
 import handsim.task.HeightTask;
 import handsim.task.StateVector;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The height task as an environment: one decision per THROW, terminal on a drop, reproducible from its seed. */
+@Tag("slow")
 class ThrowEnvTest {
 
     private final ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
 
-    private static ThrowEnvs envs(ThrowSpace space) {
+    private static ThrowEnvFactory envs(ThrowSpace space) {
         return TestSupport.heightEnvs(space);
     }
 

@@ -16,10 +16,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** Throw policy files: a save-load round trip acts identically; a policy is refused for what it was not trained for. */
+@Tag("fast")
 class ThrowPolicyFileTest {
 
     private final ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));

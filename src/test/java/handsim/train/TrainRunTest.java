@@ -1,5 +1,7 @@
 package handsim.train;
 
+import handsim.sim.Simulator;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -24,6 +26,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -32,6 +35,7 @@ import org.junit.jupiter.api.io.TempDir;
  * third decision on) writes a well-formed run folder, and a run stopped after its first
  * checkpoint and resumed ends exactly where an uninterrupted one does.
  */
+@Tag("slow")
 class TrainRunTest {
 
     private static TrainConfig tinyConfig() {
@@ -49,19 +53,19 @@ class TrainRunTest {
         return TrainConfig.parse(Json.of("tiny height run", Json.withOverrides(file.toString(), Json.load(file).node(), kv)));
     }
 
-    private static ThrowEnvs envs() {
+    private static ThrowEnvFactory envs() {
         return TestSupport.heightEnvs(ControllerConfig.load(Home.resolve("configs/controller.json")).throwSpace());
     }
 
-    private static Rollouts rollouts() {
-        return new LocalRollouts(1, () -> new OdeSimulator(TestSupport.model(), TestSupport.simConfig()));
+    private static Rollouts<Simulator> rollouts() {
+        return new LocalRollouts<>(1, () -> new OdeSimulator(TestSupport.model(), TestSupport.simConfig()));
     }
 
     @Test
     void aRunWritesItsFolderAndAResumedRunEndsLikeAnUninterruptedOne(@TempDir Path tmp) throws Exception {
         PrintStream quiet = new PrintStream(new ByteArrayOutputStream());
         Path whole = tmp.resolve("whole"), split = tmp.resolve("split");
-        try (Rollouts r = rollouts()) {
+        try (Rollouts<Simulator> r = rollouts()) {
             com.fasterxml.jackson.databind.node.ObjectNode started = Json.mapper().createObjectNode()
                     .put("command", "scripts/handsim train --config tiny.json").put("commit", "0123abc");
             TrainRun.start(whole, tinyConfig(), envs(), r, started).run(quiet);
@@ -86,7 +90,7 @@ class TrainRunTest {
         Path whole = tmp.resolve("whole"), extended = tmp.resolve("extended");
         TrainConfig twoEpisodes = TrainConfig.parse(Json.of("2 episodes", Json.withOverrides("tiny", tinyConfig().toJson(),
                 Map.of("training.episodes", "2"))));
-        try (Rollouts r = rollouts()) {
+        try (Rollouts<Simulator> r = rollouts()) {
             TrainRun.start(whole, tinyConfig(), envs(), r, Json.mapper().createObjectNode()).run(quiet);
             TrainRun.start(extended, twoEpisodes, envs(), r, Json.mapper().createObjectNode()).run(quiet);
             assertEquals(2, MetricsCsv.read(extended.resolve(TrainRun.METRICS)).size(), "the first run finished at its budget");
@@ -138,8 +142,8 @@ class TrainRunTest {
         Path shipped = ThrowPolicyFile.shipped("height", "sphere");
         handsim.learn.Policy policy = ThrowPolicyFile.load(shipped).policy();
         TrainConfig c = tinyConfig(Map.of("pretrain.policyObservations", "10000"));
-        try (Rollouts r = rollouts()) {
-            ThrowEnvs heightSpace = TestSupport.heightEnvs(TestSupport.heightTask(null).throwSpace(
+        try (Rollouts<Simulator> r = rollouts()) {
+            ThrowEnvFactory heightSpace = TestSupport.heightEnvs(TestSupport.heightTask(null).throwSpace(
                     ControllerConfig.load(Home.resolve("configs/controller.json")).throwSpace())); // as train makes it
             TrainRun run = TrainRun.start(tmp.resolve("tuned"), c, heightSpace, r, Json.mapper().createObjectNode(), shipped);
             java.util.SplittableRandom rng = new java.util.SplittableRandom(3);

@@ -12,10 +12,12 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The warm start's dataset and pretraining, without physics. */
+@Tag("slow")
 class WarmstartTest {
 
     private static List<Warmstart.Search> searches(int n, SplittableRandom r) {

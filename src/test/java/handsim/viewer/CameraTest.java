@@ -6,9 +6,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
 import handsim.math.Vec3;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The camera's projection and mouse moves, without OpenGL. */
+@Tag("fast")
 class CameraTest {
 
     /** Matrices are single precision (what OpenGL takes): ~1e-7 relative, far below a pixel. */

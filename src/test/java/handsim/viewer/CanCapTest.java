@@ -15,6 +15,7 @@ import java.awt.image.BufferedImage;
 import java.util.Collections;
 import java.util.List;
 import java.util.Optional;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -23,6 +24,7 @@ import org.junit.jupiter.api.Test;
  * diffuse light; were it culled (wound the wrong way round), the far cap or the tube's inside
  * would show, facing away from the light and lit by the ambient alone.
  */
+@Tag("fast")
 class CanCapTest {
 
     static final int SIZE = 240;

@@ -6,10 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import handsim.TestSupport;
-import handsim.live.LiveRun;
-import handsim.live.SimClock;
+import handsim.scene.LiveRun;
+import handsim.scene.SimClock;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchLoopScene;
+import handsim.scene.CatchLoopScene;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
@@ -18,6 +18,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * written as one .glb beside the PNG recordings, with the floor, the goal plane and the camera.
  * The run is advanced by hand at 60 Hz, as in {@link ViewerTest}.
  */
+@Tag("slow")
 class GltfRecordingTest {
 
     static final double FRAME = 1 / 60.0;

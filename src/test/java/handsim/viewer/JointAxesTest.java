@@ -12,9 +12,11 @@ import handsim.sim.WorldSnapshot;
 import java.util.List;
 import java.util.Optional;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The joint-axis overlay recovers every DOF's world axis from body frames alone. */
+@Tag("fast")
 class JointAxesTest {
 
     /** Euler decomposition and recomposition in double precision. */

@@ -9,8 +9,8 @@ import handsim.model.HandModel;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.HeldBallScenario;
-import handsim.task.HeldBallScene;
+import handsim.scene.HeldBallScenario;
+import handsim.scene.HeldBallScene;
 import handsim.task.ServoLoop;
 import java.awt.image.BufferedImage;
 import java.nio.file.Files;
@@ -18,6 +18,7 @@ import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.Set;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * (scripts/handsim test, .ci/run) provides one with xvfb-run; without one this test fails with
  * the renderer's message rather than passing silently.
  */
+@Tag("fast")
 class RenderSmokeTest {
 
     static final int WIDTH = 480, HEIGHT = 360;

@@ -6,6 +6,7 @@ import handsim.TestSupport;
 import handsim.math.Vec3;
 import java.awt.image.BufferedImage;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -13,6 +14,7 @@ import org.junit.jupiter.api.Test;
  * where the camera projects its centre, in its own colour. Needs an X display, as {@link
  * RenderSmokeTest} does.
  */
+@Tag("fast")
 class SurfaceRenderTest {
 
     @Test

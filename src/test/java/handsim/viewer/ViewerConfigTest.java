@@ -9,8 +9,10 @@ import handsim.TestSupport;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
+@Tag("fast")
 class ViewerConfigTest {
 
     @Test

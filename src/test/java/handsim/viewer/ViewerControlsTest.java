@@ -8,18 +8,20 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.lwjgl.glfw.GLFW.*;
 
 import handsim.TestSupport;
-import handsim.live.FakeScene;
-import handsim.live.LiveRun;
-import handsim.live.SimClock;
-import handsim.task.SceneCommand;
+import handsim.scene.FakeScene;
+import handsim.scene.LiveRun;
+import handsim.scene.SimClock;
+import handsim.scene.SceneCommand;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Keys and mouse, without a window: GLFW events in, run commands, camera moves and requests out. */
+@Tag("fast")
 class ViewerControlsTest {
 
     private FakeScene scene;

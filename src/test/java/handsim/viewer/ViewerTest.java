@@ -9,16 +9,16 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.kin.Frame;
-import handsim.live.LiveFrame;
-import handsim.live.LiveRun;
-import handsim.live.SimClock;
+import handsim.scene.LiveFrame;
+import handsim.scene.LiveRun;
+import handsim.scene.SimClock;
 import handsim.math.Vec3;
 import handsim.sim.ode.OdeSimulator;
-import handsim.task.CatchEvaluation;
-import handsim.task.CatchLoopScene;
+import handsim.evaluation.CatchEvaluation;
+import handsim.scene.CatchLoopScene;
 import handsim.task.EpisodeLimits;
 import handsim.task.Goal;
-import handsim.task.HeightControl;
+import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
 import java.awt.image.BufferedImage;
@@ -26,6 +26,7 @@ import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.Set;
 import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -35,6 +36,7 @@ import org.junit.jupiter.api.io.TempDir;
  * same every time), a screenshot, and the arm, the object and the goal plane found where the
  * camera projects them.
  */
+@Tag("fast")
 class ViewerTest {
 
     static final long SEED = 1;

@@ -3,5 +3,8 @@
  * barrier on thickness-offset squared distances, smoothed lagged friction, the spatial-hash broad
  * phase, the set of active contacts, and the largest intersection-free step of a Newton update.
  * Imports {@code handsim.cards.geom}, {@code handsim.cards.linalg} and {@code handsim.cards.mesh} only.
+ *
+ * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
+ * nothing else of handsim.
  */
 package handsim.cards.contact;

@@ -4,5 +4,8 @@
  * the edge–edge mollifier; additive continuous collision detection; and {@link
  * handsim.cards.geom.Jet}, the small forward-mode AD the shell energies use. Pure Java: imports
  * nothing outside the JDK.
+ *
+ * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
+ * nothing else of handsim.
  */
 package handsim.cards.geom;

@@ -2,5 +2,8 @@
  * Card sleights as functions of their bone trajectories: Card Snapping (thesis 4.2.4), its scene,
  * parameters, and {@link handsim.cards.sleight.SnapTrial#run}, the entry point an optimiser calls.
  * Imports {@code handsim.cards.sim}, {@code handsim.cards.mesh} and {@code handsim.config}.
+ *
+ * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
+ * nothing else of handsim.
  */
 package handsim.cards.sleight;

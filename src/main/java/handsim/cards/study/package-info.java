@@ -16,5 +16,8 @@
  *
  * <p>Imports {@code handsim.cards.tpe}, {@code handsim.config}, {@code handsim.report},
  * Jackson and the JDK; no physics, learning, viewer or command-line library.
+ *
+ * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
+ * nothing else of handsim.
  */
 package handsim.cards.study;

@@ -10,5 +10,8 @@
  * <p>Imports the JDK and commons-math3 (the error function) only: no handsim package, no
  * physics, learning or viewer library. Running a study (trial files, resuming, workers) is
  * {@code handsim.cards.study}.
+ *
+ * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
+ * nothing else of handsim.
  */
 package handsim.cards.tpe;

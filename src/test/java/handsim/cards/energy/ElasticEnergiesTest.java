@@ -3,9 +3,11 @@ package handsim.cards.energy;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.Random;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Finite-difference checks of the membrane, bending and tetrahedron energies, and their rest states. */
+@Tag("fast")
 class ElasticEnergiesTest {
 
     private static double[] perturbed(double[] rest, double amount, long seed) {

@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import handsim.cards.IpcOracle;
 import handsim.cards.contact.Barrier;
 import handsim.cards.contact.FrictionMollifier;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -15,6 +16,7 @@ import org.junit.jupiter.api.Test;
  * the same hit/no-hit and a time of impact never later than the reference and within 20 % of it.
  * "Relative" is taken per array: every entry within 1e-9 of the array's largest magnitude.
  */
+@Tag("fast")
 class IpcOracleTest {
 
     private static final double REL = 1e-9;

@@ -10,9 +10,11 @@ import java.util.TreeSet;
 import org.apache.commons.math3.linear.CholeskyDecomposition;
 import org.apache.commons.math3.linear.MatrixUtils;
 import org.apache.commons.math3.linear.RealMatrix;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** Small dense and sparse linear algebra of the card simulator, each against its definition. */
+@Tag("fast")
 class LinalgTest {
 
     @Test

@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashMap;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The generated card and fingertip meshes: counts from the thesis, orientation, closedness. */
+@Tag("fast")
 class MeshTest {
 
     private static final double W = 0.0889;

@@ -9,9 +9,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The card simulator on small scenes, each against an expectation from first principles. */
+@Tag("slow")
 class CardPhysicsTest {
 
     private static final FrictionTable FRICTION = new FrictionTable(0.2, 0.4, 0.4);

@@ -10,6 +10,7 @@ import handsim.cards.energy.FiniteDifference;
 import handsim.cards.energy.HessianSink;
 import handsim.cards.mesh.CardMesher;
 import java.util.Random;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.Test;
  * that the barrier (face–vertex, edge–vertex, edge–edge and ground contacts) and the friction
  * (both below and above the smoothing slip εv h) are all active.
  */
+@Tag("fast")
 class PotentialDerivativesTest {
 
     @Test

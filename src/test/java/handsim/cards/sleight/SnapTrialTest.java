@@ -8,12 +8,14 @@ import handsim.cards.sim.CardsConfig;
 import handsim.config.Json;
 import java.nio.file.Path;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * A reduced Card Snapping trial (coarse 7 x 5 x 5 fingertips, 0.3 s): the hold keeps both
  * cards, the run never lets surfaces touch, and the slide is what turns the cards apart.
  */
+@Tag("slow")
 class SnapTrialTest {
 
     static SnapTrial reducedTrial() {

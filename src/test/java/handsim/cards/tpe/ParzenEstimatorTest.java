@@ -5,12 +5,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * The random half of the sampler (draws from l(x)), which cannot be compared with Optuna's
  * numbers, checked against the estimator's own density, which is (TpeReferenceTest).
  */
+@Tag("fast")
 class ParzenEstimatorTest {
 
     @Test

@@ -13,6 +13,7 @@ import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -26,6 +27,7 @@ import org.junit.jupiter.api.Test;
  * relative for log densities (commons-math3's erf against Optuna's fdlibm port, both ~1e-15,
  * through logs of tail masses down to e^-450). Splits and chosen candidates must be identical.
  */
+@Tag("fast")
 class TpeReferenceTest {
 
     private static JsonNode reference;

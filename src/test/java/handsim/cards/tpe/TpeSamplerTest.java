@@ -8,6 +8,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.function.Function;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.Test;
  * 3.7e-4 on the quadratic and 0.38 on Branin over seeds 1-20, hypervolume 0.524 to 0.615 on
  * ZDT1 over seeds 1-5.
  */
+@Tag("slow")
 class TpeSamplerTest {
 
     private static final List<Direction> MIN = List.of(Direction.MINIMIZE);

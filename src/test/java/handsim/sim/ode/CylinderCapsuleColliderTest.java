@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.ode4j.math.DMatrix3;
 import org.ode4j.ode.DCapsule;
@@ -15,6 +16,7 @@ import org.ode4j.ode.OdeHelper;
  * The analytic cylinder-capsule contact: exact cases worked by hand, agreement with a brute-force
  * search along the capsule, continuity in the poses, and ODE's normal convention.
  */
+@Tag("fast")
 class CylinderCapsuleColliderTest {
 
     // the can: r 0.03, h 0.1, along y at the origin; a finger-sized capsule, r 0.01, 4 cm long

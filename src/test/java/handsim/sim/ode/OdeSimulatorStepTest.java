@@ -11,13 +11,15 @@ import handsim.sim.ContactReport;
 import handsim.sim.ObjectSpec;
 import handsim.sim.RigidState;
 import handsim.sim.SimConfig;
-import handsim.task.HeldBallScenario;
+import handsim.scene.HeldBallScenario;
 import handsim.task.ServoLoop;
 import java.lang.management.ManagementFactory;
 import java.util.SplittableRandom;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The engine adapter's per-step path: the collision broad phase and its allocation. */
+@Tag("fast")
 class OdeSimulatorStepTest {
 
     private final HandModel m = TestSupport.model();

@@ -1,0 +1,233 @@
+package handsim.evaluation;
+
+import handsim.config.Home;
+import handsim.config.ReadLog;
+import handsim.rollout.RolloutTask;
+import java.util.List;
+import java.util.SortedMap;
+import java.util.TreeMap;
+import java.util.function.Function;
+
+import handsim.report.Outputs;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.channels.FileChannel;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * The finished episodes of a long evaluation, one JSON line each, appended and flushed to disk
+ * as each finishes: a run that is killed loses only the episodes under way, and the same
+ * command run again reads the finished ones back instead of running them. The first line is
+ * the run's signature (its options and the hashes of its inputs); a journal whose signature
+ * differs belongs to another run and is refused, naming what differs. A line cut short by a
+ * kill during its write is dropped on reading. Once the run's results are written the journal
+ * is deleted.
+ */
+public final class EpisodeJournal {
+
+    /** Episodes this run finished itself (the others were read back). */
+    private int newlyFinished;
+
+    private static final ObjectMapper MAPPER = new ObjectMapper();
+
+    private final Path file;
+    private final Map<Integer, JsonNode> done;
+    private final int droppedLines;
+
+    private EpisodeJournal(Path file, Map<Integer, JsonNode> done, int droppedLines) {
+        this.file = file;
+        this.done = done;
+        this.droppedLines = droppedLines;
+    }
+
+    /**
+     * The journal at {@code file}: the one a run with this {@code signature} left there, or a new
+     * one. Throws {@link IllegalArgumentException} if the file holds another run's journal.
+     */
+    public static EpisodeJournal open(Path file, ObjectNode signature) {
+        try {
+            if (!Files.exists(file)) {
+                Files.createDirectories(file.toAbsolutePath().getParent());
+                Outputs.writeString(file, MAPPER.writeValueAsString(header(signature)) + "\n");
+                return new EpisodeJournal(file, new HashMap<>(), 0);
+            }
+            List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            JsonNode head = lines.isEmpty() ? null : parse(lines.get(0)).orElse(null);
+            if (head == null || !head.has("signature")) {
+                throw new IllegalArgumentException(file + " is not an episode journal (delete it or write the results elsewhere)");
+            }
+            // compared as read back from text, as the journal's own is (a long written is an int read)
+            String differs = difference(head.get("signature"), MAPPER.readTree(MAPPER.writeValueAsString(signature)), "");
+            if (differs != null) {
+                throw new IllegalArgumentException(file + " holds the finished episodes of another run (" + differs
+                        + "): delete it to start afresh, or write the results elsewhere");
+            }
+            Map<Integer, JsonNode> done = new HashMap<>();
+            int dropped = 0;
+            for (String line : lines.subList(1, lines.size())) {
+                Optional<JsonNode> entry = parse(line);
+                if (entry.isPresent() && entry.get().has("index") && entry.get().has("result")) {
+                    done.put(entry.get().get("index").asInt(), entry.get().get("result"));
+                } else {
+                    dropped++; // a write cut short by a kill
+                }
+            }
+            return new EpisodeJournal(file, done, dropped);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot use the episode journal " + file, e);
+        }
+    }
+
+    private static ObjectNode header(ObjectNode signature) {
+        ObjectNode h = JsonNodeFactory.instance.objectNode();
+        h.set("signature", signature);
+        return h;
+    }
+
+    private static Optional<JsonNode> parse(String line) {
+        try {
+            return Optional.ofNullable(MAPPER.readTree(line));
+        } catch (JsonProcessingException e) {
+            return Optional.empty();
+        }
+    }
+
+    /** The first field where {@code was} and {@code is} differ (a dotted path and both values), or null if they are equal. */
+    private static String difference(JsonNode was, JsonNode is, String at) {
+        if (was.isObject() && is.isObject()) {
+            List<String> names = new ArrayList<>();
+            was.fieldNames().forEachRemaining(names::add);
+            for (Iterator<String> it = is.fieldNames(); it.hasNext(); ) {
+                String name = it.next();
+                if (!was.has(name)) {
+                    names.add(name);
+                }
+            }
+            for (String name : names) {
+                JsonNode a = was.path(name), b = is.path(name);
+                String d = difference(a, b, at.isEmpty() ? name : at + "." + name);
+                if (d != null) {
+                    return d;
+                }
+            }
+            return null;
+        }
+        return was.equals(is) ? null : at + " was " + was + ", is " + is;
+    }
+
+    /** The file this journal writes to. */
+    public Path file() {
+        return file;
+    }
+
+    /** The result journaled for episode {@code index}, if an interrupted run of the same command finished it. */
+    public synchronized Optional<JsonNode> result(int index) {
+        return Optional.ofNullable(done.get(index));
+    }
+
+    /** How many episodes interrupted runs of the same command finished. */
+    public synchronized int finished() {
+        return done.size();
+    }
+
+    /** Episodes this run read back from the journal instead of running them. */
+    public synchronized int resumed() {
+        return done.size() - newlyFinished;
+    }
+
+    /**
+     * {@code task} that reads an episode back from this journal when an interrupted run of the
+     * same command finished it, and otherwise runs it and journals its result at once.
+     */
+    public <W, R> RolloutTask<W, R> resumable(RolloutTask<W, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return worker -> {
+            RolloutTask.Rollout<R> rollout = task.prepare(worker);
+            return i -> {
+                Optional<JsonNode> earlier = result(i);
+                if (earlier.isPresent()) {
+                    return read.apply(earlier.get());
+                }
+                R result = rollout.run(i);
+                append(i, write.apply(result));
+                synchronized (this) {
+                    newlyFinished++;
+                }
+                return result;
+            };
+        };
+    }
+
+    /**
+     * The SHA-256 of every file under configs/ and models/ and of {@code others} (those that
+     * exist), by path: what a run's signature holds of its inputs.
+     */
+    public static SortedMap<String, String> inputHashes(List<Path> others) throws IOException {
+        SortedMap<String, String> hashes = new TreeMap<>();
+        for (String dir : List.of("configs", "models")) {
+            try (var walk = Files.walk(Home.resolve(dir))) {
+                for (Path f : walk.filter(Files::isRegularFile).toList()) {
+                    hashes.put(Home.root().relativize(f).toString(), ReadLog.sha256(Files.readAllBytes(f)));
+                }
+            }
+        }
+        for (Path f : others) {
+            if (f != null && Files.isRegularFile(f)) {
+                hashes.put(f.toAbsolutePath().normalize().toString(), ReadLog.sha256(Files.readAllBytes(f)));
+            }
+        }
+        return hashes;
+    }
+
+    /** Lines an interrupted run left unfinished (cut short by a kill) and that were dropped. */
+    public int droppedLines() {
+        return droppedLines;
+    }
+
+    /** Appends the result of episode {@code index} and forces it to disk before returning. */
+    public synchronized void append(int index, JsonNode result) {
+        ObjectNode entry = JsonNodeFactory.instance.objectNode().put("index", index);
+        entry.set("result", result);
+        try (FileChannel out = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
+            // after a line cut short by a kill, start on a line of one's own
+            byte[] line = ((Files.size(file) > 0 && !endsWithNewline()) ? "\n" : "").concat(MAPPER.writeValueAsString(entry) + "\n")
+                    .getBytes(StandardCharsets.UTF_8);
+            out.write(java.nio.ByteBuffer.wrap(line));
+            out.force(false);
+            done.put(index, result);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot append to the episode journal " + file, e);
+        }
+    }
+
+    private boolean endsWithNewline() throws IOException {
+        try (FileChannel in = FileChannel.open(file, StandardOpenOption.READ)) {
+            java.nio.ByteBuffer last = java.nio.ByteBuffer.allocate(1);
+            in.read(last, in.size() - 1);
+            return last.get(0) == '\n';
+        }
+    }
+
+    /** Deletes the journal: the run's results are written. */
+    public void delete() {
+        try {
+            Files.deleteIfExists(file);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot delete the episode journal " + file, e);
+        }
+    }
+}

@@ -1,0 +1,145 @@
+package handsim.evaluation;
+
+import handsim.sim.Simulator;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.math.Vec3;
+import handsim.report.Plot;
+import handsim.rollout.Rollouts;
+import handsim.sim.ObjectSpec;
+import handsim.task.LoopRecord;
+import handsim.task.Tasks;
+import handsim.task.ThrowTask;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.DoubleSummaryStatistics;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.DoubleStream;
+
+/**
+ * How far a tiny difference carries through the loops (height or flip task): every episode run
+ * as seeded and with its launch velocity nudged in random directions ({@link LaunchSensitivity}),
+ * each copy for {@code loops} throws whether they succeed or not; the spread of each throw's apex
+ * and flight rotation across the copies, per episode, and its mean and median over episodes.
+ */
+final class SensitivityEvaluation extends TaskEvaluation {
+
+    private final String task;
+    private final String object;
+    private final String controller;
+    private final long seed;
+    private final int loops;
+    private final int episodes;
+    private final int copies;
+    private final double nudge;
+    private final Path plot;
+
+    SensitivityEvaluation(EvaluationRequest request, EvaluationSetup setup) {
+        super(request, setup);
+        task = request.task();
+        object = request.object();
+        controller = request.controller();
+        seed = request.seed();
+        loops = request.loops();
+        episodes = request.episodes();
+        copies = request.copies();
+        nudge = request.nudge();
+        plot = request.plot();
+    }
+
+    @Override
+    public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
+        Tasks tasks = setup.tasks();
+        ObjectSpec spec = setup.object();
+        List<List<Vec3>> nudges = new ArrayList<>();
+        for (int e = 0; e < episodes; e++) {
+            nudges.add(LaunchSensitivity.nudges(seed + e, copies, nudge));
+        }
+        // run j is copy j % copies of episode j / copies; an episode is printed once its copies are in
+        List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
+        List<List<LoopRecord>> copiesDone = new ArrayList<>();
+        ArrayNode eps = out.putArray("episodes");
+        rollouts.run(episodes * copies, resumable(sim -> {
+            ThrowTask t = task.equals("height") ? tasks.height(heightGoals()) : tasks.create(task, object);
+            CatchEvaluation evaluation = evaluation(t);
+            return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
+        }, ResultJson::loops, ResultJson::loops), (j, loopsOfCopy) -> {
+            copiesDone.add(loopsOfCopy);
+            if (copiesDone.size() == copies) {
+                List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(copiesDone);
+                copiesDone.clear();
+                perEpisode.add(spreads);
+                ObjectNode o = eps.addObject();
+                o.put("seed", seed + j / copies);
+                o.set("throws", spreadsJson(spreads));
+                console.printf(Locale.ROOT, "episode %d: %s%n", seed + j / copies, spreadsLine(spreads));
+            }
+        });
+        List<LaunchSensitivity.Spread> mean = LaunchSensitivity.mean(perEpisode);
+        List<LaunchSensitivity.Spread> median = LaunchSensitivity.median(perEpisode);
+        out.put("copies", copies);
+        out.put("nudge_m_s", nudge);
+        out.put("loops", loops);
+        out.set("mean_by_throw", spreadsJson(mean));
+        out.set("median_by_throw", spreadsJson(median));
+        console.printf(Locale.ROOT, "%s task, %s controller, %s, %d episodes x %d copies (launch nudged by %.1e m/s), mean spread "
+                + "across copies by throw: %s%n", task, controller, object, episodes, copies, nudge, spreadsLine(mean));
+        console.printf(Locale.ROOT, "median over episodes: %s%n", spreadsLine(median));
+        if (plot != null) {
+            boolean rotation = spec.longAxis().isPresent();
+            // the spreads span many orders of magnitude (1e-7 mm to tens of degrees): log10 scale
+            double[] logMean = log10Spreads(mean, rotation), logMedian = log10Spreads(median, rotation);
+            DoubleSummaryStatistics range = DoubleStream.concat(Arrays.stream(logMean),
+                    Arrays.stream(logMedian)).filter(Double::isFinite).summaryStatistics();
+            Plot chart = new Plot(String.format(Locale.ROOT, "Launch nudged by %.0e m/s: spread across %d copies, %s controller, %s", nudge, copies,
+                    controller, object), "throw", rotation ? "log10 of flight rotation sd (deg)" : "log10 of apex sd (mm)")
+                    .add("mean over episodes", throwIndices(mean), logMean, Plot.BLUE, Plot.Style.LINE_POINTS)
+                    .add("median over episodes", throwIndices(median), logMedian, Plot.ORANGE, Plot.Style.LINE_POINTS);
+            if (range.getCount() > 0) {
+                chart.yRange(Math.floor(range.getMin()) - 0.5, Math.ceil(range.getMax()) + 1.5); // room for the legend
+            }
+            chart.writePng(plot);
+            console.println("wrote " + plot);
+        }
+    }
+
+    private static double[] throwIndices(List<LaunchSensitivity.Spread> spreads) {
+        return spreads.stream().mapToDouble(LaunchSensitivity.Spread::throwIndex).toArray();
+    }
+
+    /** log10 of each throw's flight rotation spread in degrees, or of its apex spread in mm. */
+    private static double[] log10Spreads(List<LaunchSensitivity.Spread> spreads, boolean rotation) {
+        return spreads.stream().mapToDouble(s -> Math.log10(rotation ? Math.toDegrees(s.rotationSd()) : 1000 * s.apexSd()))
+                .toArray();
+    }
+
+    private static ArrayNode spreadsJson(List<LaunchSensitivity.Spread> spreads) {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode();
+        for (LaunchSensitivity.Spread s : spreads) {
+            ObjectNode o = a.addObject();
+            o.put("throw", s.throwIndex());
+            o.put("copies", s.copies());
+            putFinite(o, "apex_sd_mm", 1000 * s.apexSd());
+            putFinite(o, "flight_rotation_sd_deg", Math.toDegrees(s.rotationSd()));
+            putFinite(o, "flight_rotation_range_deg", Math.toDegrees(s.rotationRange()));
+        }
+        return a;
+    }
+
+    private static String spreadsLine(List<LaunchSensitivity.Spread> spreads) {
+        StringBuilder sb = new StringBuilder();
+        for (LaunchSensitivity.Spread s : spreads) {
+            sb.append(String.format(Locale.ROOT, "%sthrow %d: apex sd %.3g mm", sb.length() == 0 ? "" : "; ", s.throwIndex(), 1000 * s.apexSd()));
+            if (Double.isFinite(s.rotationSd())) {
+                sb.append(String.format(Locale.ROOT, ", rotation sd %.3g deg", Math.toDegrees(s.rotationSd())));
+            }
+            sb.append(" (").append(s.copies()).append(')');
+        }
+        return sb.length() == 0 ? "no throws" : sb.toString();
+    }
+}

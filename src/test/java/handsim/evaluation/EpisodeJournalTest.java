@@ -1,0 +1,64 @@
+package handsim.evaluation;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The journal of finished episodes: kept across runs of the same signature, refused for another, robust to a cut line. */
+@Tag("fast")
+class EpisodeJournalTest {
+
+    private static ObjectNode signature(long seed) {
+        ObjectNode s = JsonNodeFactory.instance.objectNode().put("task", "flip").put("seed", seed);
+        s.putObject("files").put("configs/sim.json", "abc");
+        return s;
+    }
+
+    @Test
+    void finishedEpisodesAreReadBackByTheSameRunAndACutLineIsDropped(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("r.json.episodes.jsonl");
+        EpisodeJournal first = EpisodeJournal.open(file, signature(1));
+        assertEquals(0, first.finished());
+        first.append(2, JsonNodeFactory.instance.objectNode().put("loops", 7).put("x", 0.1 + 0.2));
+        first.append(0, JsonNodeFactory.instance.objectNode().put("loops", 3));
+        // a kill in the middle of the next append leaves half a line
+        Files.writeString(file, "{\"index\":1,\"resu", StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+
+        EpisodeJournal again = EpisodeJournal.open(file, signature(1));
+        assertEquals(2, again.finished());
+        assertEquals(1, again.droppedLines());
+        assertEquals(7, again.result(2).orElseThrow().get("loops").asInt());
+        assertEquals(0.1 + 0.2, again.result(2).orElseThrow().get("x").asDouble(), 0, "a double reads back to the same bits");
+        assertFalse(again.result(1).isPresent(), "the episode cut short runs again");
+        // the next append starts on a line of its own, after the cut one
+        again.append(1, JsonNodeFactory.instance.objectNode().put("loops", 5));
+        EpisodeJournal third = EpisodeJournal.open(file, signature(1));
+        assertEquals(3, third.finished());
+        assertEquals(5, third.result(1).orElseThrow().get("loops").asInt());
+        third.delete();
+        assertFalse(Files.exists(file));
+    }
+
+    @Test
+    void anotherRunsJournalIsRefusedNamingWhatDiffers(@TempDir Path dir) {
+        Path file = dir.resolve("r.json.episodes.jsonl");
+        EpisodeJournal.open(file, signature(1)).append(0, JsonNodeFactory.instance.objectNode());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, signature(2)));
+        assertTrue(e.getMessage().contains("seed was 1, is 2"), e.getMessage());
+        ObjectNode changedConfig = signature(1);
+        ((ObjectNode) changedConfig.get("files")).put("configs/sim.json", "abd");
+        e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, changedConfig));
+        assertTrue(e.getMessage().contains("files.configs/sim.json"), e.getMessage());
+    }
+}
