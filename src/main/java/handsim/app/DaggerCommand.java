@@ -11,9 +11,9 @@ import handsim.train.DaggerRunConfig;
 import handsim.train.ThrowEnvFactory;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -28,18 +28,8 @@ import picocli.CommandLine.Option;
                 + "at any moment continues with --resume. The teacher is needed for training only: the policy throws alone.")
 final class DaggerCommand implements Callable<Integer> {
 
-    @Option(names = "--config", paramLabel = "FILE", description = "DAgger config, e.g. configs/train/flip-dagger.json")
-    Path config;
-
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set dagger.rounds=2 "
-            + "(repeatable; dotted paths into the file)")
-    List<String> overrides = List.of();
-
-    @Option(names = "--resume", paramLabel = "RUN_DIR", description = "continue the run in this folder")
-    Path resume;
-
-    @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
-    Path runs;
+    @Mixin
+    RunOptions run;
 
     @Option(names = "--init-actor", paramLabel = "POLICY",
             description = "round 0's learner: a throw policy file of the same task, object and state (default: the task's nominal throw)")
@@ -47,28 +37,26 @@ final class DaggerCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if ((config == null) == (resume == null)) {
-            throw new IllegalArgumentException("give either --config FILE (a new run) or --resume RUN_DIR");
+        run.validate();
+        if (initActor != null && run.resume != null) {
+            throw new IllegalArgumentException("--init-actor starts a new run: a resumed run keeps the start saved in its folder");
         }
-        if (resume != null && (!overrides.isEmpty() || initActor != null)) {
-            throw new IllegalArgumentException("a resumed run keeps the config and the start saved in its folder: --set and "
-                    + "--init-actor go with --config only");
-        }
-        Json file = resume == null ? TrainCommand.withOverrides(config, overrides) : null;
-        DaggerRunConfig c = resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(resume);
+        Json file = run.resume == null ? run.configFile() : null;
+        DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
         HandModel model = Wiring.model(null);
         SimConfig simConfig = Wiring.simConfig();
         ThrowEnvFactory envs = TrainCommand.environments(c.run(), model);
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
-            DaggerRun run = resume != null ? DaggerRun.resume(resume, envs, rollouts, Wiring::twinSimulator) : started(file, c, envs, rollouts);
-            run.run(System.out);
+            DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
+                    : started(file, c, envs, rollouts);
+            dagger.run(System.out);
         }
         return 0;
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */
     private DaggerRun started(Json file, DaggerRunConfig c, ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
-        Path dir = RunFolders.claim(runs, "--runs", "dagger", c.run().name(), c.learner().seed());
+        Path dir = RunFolders.claim(run.runs, "--runs", "dagger", c.run().name(), c.learner().seed());
         try {
             return DaggerRun.start(dir, file, envs, rollouts, Wiring::twinSimulator, provenance(c), initActor);
         } catch (IOException | RuntimeException e) {
@@ -79,6 +67,6 @@ final class DaggerCommand implements Callable<Integer> {
 
     /** What a run folder records about how the run was made. */
     private ObjectNode provenance(DaggerRunConfig c) {
-        return TrainCommand.provenance("dagger", config, overrides, initActor, c.learner().seed());
+        return run.provenance("dagger", initActor, c.learner().seed());
     }
 }
