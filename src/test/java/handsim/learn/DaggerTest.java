@@ -12,12 +12,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Function;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * DAgger on a task without physics: the learner must find a narrow window of actions that
  * depends on the state, as a throw that flips must.
  */
+@Tag("slow")
 class DaggerTest {
 
     /**

@@ -10,10 +10,12 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /** The DAgger run's dataset on disk: exact round trips, and what a kill leaves behind. */
+@Tag("fast")
 class DemonstrationSetTest {
 
     private static Dagger.Episode episode(int round, int index, int decisions) {
