@@ -86,7 +86,7 @@ public final class DaggerRun {
         }
         DaggerRunConfig config = DaggerRunConfig.parse(configFile);
         if (initPolicy != null) {
-            checkedPolicy(ThrowPolicyFile.load(initPolicy), initPolicy, envs);
+            ThrowPolicyFile.initActor(initPolicy, envs); // refused before the folder is written
         }
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), configFile.node());
@@ -180,22 +180,13 @@ public final class DaggerRun {
     /** Round 0's learner when the run started from a policy, else null (the nominal throw). */
     private Policy initialPolicy() {
         Path init = dir.resolve(INIT_POLICY);
-        return Files.isRegularFile(init) ? checkedPolicy(ThrowPolicyFile.load(init), init, envs) : null;
+        return Files.isRegularFile(init) ? ThrowPolicyFile.initActor(init, envs).policy() : null;
     }
 
     /** The task's nominal throw from every state. */
     private Function<double[], double[]> nominalActor() {
         double[] nominal = envs.space().toAction(envs.tasks().get().nominalThrow());
         return obs -> nominal.clone();
-    }
-
-    /** The actor of a throw policy file, checked against the run's task, object, state and throw box. */
-    private static Policy checkedPolicy(ThrowPolicyFile f, Path file, ThrowEnvFactory envs) {
-        String mismatch = f.mismatch(envs);
-        if (mismatch != null) {
-            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
-        }
-        return f.policy();
     }
 
     private Path roundPolicyFile(int round) {

@@ -82,10 +82,23 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
     }
 
     /**
+     * The policy of {@code file} to start a learner on {@code envs} with ({@code --init-actor});
+     * refused, naming the file, when it was trained for another task, object, state or throw box.
+     */
+    public static ThrowPolicyFile initActor(Path file, ThrowEnvFactory envs) {
+        ThrowPolicyFile f = load(file);
+        String mismatch = f.mismatch(envs);
+        if (mismatch != null) {
+            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
+        }
+        return f;
+    }
+
+    /**
      * Why this policy cannot start a learner on {@code envs} (another task, object, state encoding
      * or throw box), or null when it can.
      */
-    public String mismatch(ThrowEnvFactory envs) {
+    private String mismatch(ThrowEnvFactory envs) {
         return !task.equals(envs.task()) || !object.equals(envs.object().name())
                 ? "was trained for the " + task + " task with a " + object + ", this run is the " + envs.task()
                         + " task with a " + envs.object().name()

@@ -134,11 +134,7 @@ public final class TrainRun {
      * encoding and throw space, and a set {@code pretrain.policyObservations}.
      */
     private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvFactory envs) {
-        ThrowPolicyFile f = ThrowPolicyFile.load(file);
-        String mismatch = f.mismatch(envs);
-        if (mismatch != null) {
-            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
-        }
+        ThrowPolicyFile f = ThrowPolicyFile.initActor(file, envs);
         if (config.learner().pretrain().policyObservations() == 0) {
             throw new IllegalArgumentException("--init-actor " + file + " is a policy: set pretrain.policyObservations, "
                     + "how many observations its normaliser's statistics count as");
