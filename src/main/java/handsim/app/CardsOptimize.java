@@ -83,7 +83,7 @@ final class CardsOptimize implements Callable<Integer> {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
         }
         StudyConfig studyConfig = StudyConfig.load(configFile);
-        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, TrainCommand.keyValues(overrides));
+        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, RunOptions.keyValues(overrides));
         SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
         if (Files.exists(dir) && !Files.isDirectory(dir)) {

@@ -27,14 +27,18 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
- * {@code handsim demo}, the main job: endless catch-and-throw of a sphere to varying heights.
- * With a display it opens the viewer; without one it runs a fixed number of throws headless,
- * prints each, and writes a run folder with a summary and a plot of apex against goal.
+ * {@code handsim demo}, the main job: endless catch-and-throw of a sphere to varying heights, or,
+ * with an object the flip task takes ({@code --object can}, {@code club}), flipping it and
+ * catching it over and over with the shipped flip policy ({@link FlipDemo}). With a display it
+ * opens the viewer; without one it runs a fixed number of throws headless, prints each, and writes
+ * a run folder with a summary and a plot.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "The main job: the hand catches and throws a sphere to a new random height every loop. "
+        description = "The main job: the hand catches and throws a sphere to a new random height every loop; with --object can "
+                + "or club it flips the object and catches it lying in the hand, over and over, with the shipped flip policy "
+                + "(models/policies/flip-<object>.json, the learned controller alone). "
                 + "Opens the viewer when there is a display (Esc quits); otherwise (or with --headless) runs --loops throws "
-                + "headless and writes summary.json, loops.csv and apex.png to a run folder.")
+                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder.")
 final class DemoCommand implements Callable<Integer> {
 
     @Mixin
@@ -81,11 +85,30 @@ final class DemoCommand implements Callable<Integer> {
         if (out != null && runs != null) {
             throw new IllegalArgumentException("--out names the run folder, --runs where a new one goes: give one of them");
         }
-        HeightGoals goals = heights != null ? parseHeights(heights) : Wiring.heightTask(null).goals();
-        String controller = bestController(episodeOptions.object);
         if (export != null && !headless && ViewerSession.hasDisplay()) {
             throw new IllegalArgumentException("--export goes with --headless (in the viewer, G records glTF)");
         }
+        String object = episodeOptions.object;
+        long seed = episodeOptions.seed;
+        if (FlipDemo.flips(object)) {
+            if (heights != null) {
+                throw new IllegalArgumentException("--heights goes with the height demo (a sphere or cuboid), not with a " + object
+                        + ", which the demo flips");
+            }
+            String flipController = FlipDemo.shippedPolicy(object) != null ? "learned" : "nominal";
+            if (!headless && ViewerSession.hasDisplay()) {
+                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null, null, false, 0, null);
+            }
+            if (!headless) {
+                System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
+            }
+            RunExport flipExport = RunExport.to(export);
+            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out)
+                    : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
+            return 0;
+        }
+        HeightGoals goals = heights != null ? parseHeights(heights) : Wiring.heightTask(null).goals();
+        String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
             return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals, null, false, 0, null);

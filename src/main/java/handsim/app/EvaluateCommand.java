@@ -17,6 +17,7 @@ import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.task.HeightTask;
+import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
@@ -258,7 +259,8 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
         ObjectSpec spec = Wiring.object(object);
-        loaded.forTask(Wiring.tasks().create(task, object), spec); // a policy for another task or object fails here
-        return t -> loaded.forTask(t, spec);
+        StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
+        loaded.forTask(Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        return t -> loaded.forTask(t, spec, hand);
     }
 }

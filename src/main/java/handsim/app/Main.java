@@ -12,7 +12,8 @@ import picocli.CommandLine.Command;
 @Command(name = "handsim", mixinStandardHelpOptions = true, version = "handsim 0.1.0",
         description = "A physically simulated arm and hand that catches and throws (Luo et al., MIG 2021).",
         subcommands = {DemoCommand.class, InfoCommand.class, BenchCommand.class, EvaluateCommand.class, RenderCommand.class,
-                ExportCommand.class, ViewCommand.class, TrainCommand.class, WarmstartCommand.class, CurvesCommand.class, CardsCommand.class})
+                ExportCommand.class, ViewCommand.class, TrainCommand.class, DaggerCommand.class, WarmstartCommand.class,
+                CurvesCommand.class, CardsCommand.class})
 public final class Main implements Runnable {
 
     public static void main(String[] args) {

@@ -8,6 +8,7 @@ import handsim.config.ConfigException;
 import handsim.control.ThrowPolicy;
 import handsim.evaluation.CatchEvaluation;
 import handsim.scene.CatchLoopScene;
+import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import handsim.train.ThrowPolicyFile;
@@ -161,7 +162,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.load(file).forTask(task, Wiring.object(setup.object()));
+            return ThrowPolicyFile.load(file).forTask(task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

@@ -1,7 +1,5 @@
 package handsim.app;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
@@ -9,6 +7,7 @@ import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
+import handsim.sim.Simulator;
 import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
@@ -20,11 +19,9 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.util.LinkedHashMap;
-import java.util.List;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -44,23 +41,13 @@ final class TrainCommand implements Callable<Integer> {
      */
     static final String RUN_DIR_FILE_PROPERTY = "handsim.runDirFile";
 
-    @Option(names = "--config", paramLabel = "FILE", description = "training config, e.g. configs/train/height.json")
-    Path config;
-
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set training.episodes=200 "
-            + "(repeatable; dotted paths into the file)")
-    List<String> overrides = List.of();
-
-    @Option(names = "--resume", paramLabel = "RUN_DIR", description = "continue the run in this folder from its last checkpoint")
-    Path resume;
+    @Mixin
+    RunOptions run;
 
     @Option(names = "--from-snapshot", description = "with --resume, when the run's checkpoint is missing or damaged: go on "
             + "from its newest intact earlier checkpoint (checkpoint-previous.zip), else from its newest intact policy "
             + "snapshot (policies/episode-N.json: the actor with a new critic and an empty replay buffer); recorded in run.json")
     boolean fromSnapshot;
-
-    @Option(names = "--runs", paramLabel = "DIR", description = "where new run folders go (default: runs/)")
-    Path runs;
 
     @Option(names = "--init-actor", paramLabel = "DATASET_OR_ACTOR",
             description = "start the actor fitted to a warm-start dataset (dataset.csv, or the warmstart run folder "
@@ -79,33 +66,28 @@ final class TrainCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if ((config == null) == (resume == null)) {
-            throw new IllegalArgumentException("give either --config FILE (a new run) or --resume RUN_DIR");
-        }
+        run.validate();
         if (sessionEpisodes != null && sessionEpisodes < 1) {
             throw new IllegalArgumentException("--session-episodes must be at least 1, got " + sessionEpisodes);
         }
-        if (initActor != null && resume != null) {
+        if (initActor != null && run.resume != null) {
             throw new IllegalArgumentException("--init-actor starts a new run: a resumed run already has its actor");
         }
-        if (resume != null && !overrides.isEmpty()) {
-            throw new IllegalArgumentException("a resumed run keeps the config saved in its folder: --set goes with --config only");
-        }
-        if (fromSnapshot && resume == null) {
+        if (fromSnapshot && run.resume == null) {
             throw new IllegalArgumentException("--from-snapshot goes with --resume RUN_DIR");
         }
-        if (episodes != null && resume == null) {
+        if (episodes != null && run.resume == null) {
             throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
                     + "with --set training.episodes=N");
         }
-        TrainConfig c = resume == null ? load(config, overrides) : TrainRun.savedConfig(resume);
+        TrainConfig c = run.resume == null ? TrainConfig.parse(run.configFile()) : TrainRun.savedConfig(run.resume);
         HandModel model = Wiring.model(null);
         SimConfig simConfig = Wiring.simConfig();
         ThrowEnvFactory envs = environments(c.run(), model);
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
-            TrainRun run = resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
-            tellLauncher(run.dir());
-            run.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
+            TrainRun training = run.resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
+            tellLauncher(training.dir());
+            training.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
         return 0;
     }
@@ -118,26 +100,6 @@ final class TrainCommand implements Callable<Integer> {
         }
     }
 
-    /** {@code --set} options as dotted keys to JSON values, in order; a malformed one is named. */
-    static Map<String, String> keyValues(List<String> overrides) {
-        Map<String, String> kv = new LinkedHashMap<>();
-        for (String o : overrides) {
-            int eq = o.indexOf('=');
-            if (eq <= 0) {
-                throw new IllegalArgumentException("--set takes KEY=VALUE, got \"" + o + "\"");
-            }
-            kv.put(o.substring(0, eq), o.substring(eq + 1));
-        }
-        return kv;
-    }
-
-    /** The config file with the {@code --set} overrides applied, validated. */
-    static TrainConfig load(Path file, List<String> overrides) {
-        Map<String, String> kv = keyValues(overrides);
-        Json j = Json.load(file);
-        return TrainConfig.parse(Json.of(file.toString(), Json.withOverrides(file.toString(), j.node(), kv)));
-    }
-
     /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
     static ThrowEnvFactory environments(TrainConfig.Run run, HandModel model) {
         Tasks tasks = Wiring.tasks();
@@ -147,12 +109,12 @@ final class TrainCommand implements Callable<Integer> {
         return new ThrowEnvFactory(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
                 Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
-                new StateVector(run.state(), object.longAxis()));
+                new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */
     private TrainRun started(TrainConfig c, ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
-        Path dir = RunFolders.claim(runs, "--runs", c.run().task(), c.run().name(), c.learner().seed());
+        Path dir = RunFolders.claim(run.runs, "--runs", c.run().task(), c.run().name(), c.learner().seed());
         try {
             return TrainRun.start(dir, c, envs, rollouts, provenance(c), initActor);
         } catch (IOException | RuntimeException e) {
@@ -163,14 +125,14 @@ final class TrainCommand implements Callable<Integer> {
 
     /** The run of --resume, its budget raised to --episodes if given (recorded only once it can go on). */
     private TrainRun resumed(ThrowEnvFactory envs, Rollouts<Simulator> rollouts) throws IOException {
-        TrainRun run = TrainRun.resume(resume, envs, rollouts, fromSnapshot, note -> System.out.println("handsim train: " + note));
-        return episodes != null ? run.extendedTo(episodes, extension()) : run;
+        TrainRun resumed = TrainRun.resume(run.resume, envs, rollouts, fromSnapshot, note -> System.out.println("handsim train: " + note));
+        return episodes != null ? resumed.extendedTo(episodes, extension()) : resumed;
     }
 
     /** What {@code run.json} records about an extension of the run's budget. */
     private ObjectNode extension() {
         ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim train --resume " + resume + " --episodes " + episodes);
+        p.put("command", "scripts/handsim train --resume " + run.resume + " --episodes " + episodes);
         p.put("commit", Provenance.gitCommit());
         p.put("at", LocalDateTime.now().toString());
         return p;
@@ -178,14 +140,6 @@ final class TrainCommand implements Callable<Integer> {
 
     /** What a run folder records about how the run was made. */
     private ObjectNode provenance(TrainConfig c) {
-        ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim train --config " + config + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
-                + (initActor == null ? "" : " --init-actor " + initActor));
-        p.put("seed", c.learner().seed());
-        p.put("commit", Provenance.gitCommit());
-        p.put("started", LocalDateTime.now().toString());
-        p.put("java", System.getProperty("java.version"));
-        p.put("cores", Runtime.getRuntime().availableProcessors());
-        return p;
+        return run.provenance("train", initActor, c.learner().seed());
     }
 }

@@ -21,8 +21,9 @@ import java.util.stream.Collectors;
 /**
  * The flip task's evaluation (paper sec. 4.4): episodes that run until a throw fails to flip or
  * is dropped (at most {@code loops} in a row), with or without a planner; the summary holds the
- * flip-and-catch loops in a row, how the episodes ended, the throws by flight rotation and by
- * arrival tilt, and the planner's work.
+ * flip-and-catch loops in a row, how the episodes ended, each throw's success and why the failed
+ * ones failed ({@code per_throw}), the throws by flight rotation and by arrival tilt, and the
+ * planner's work.
  */
 final class FlipEvaluation extends TaskEvaluation {
 
@@ -133,14 +134,15 @@ final class FlipEvaluation extends TaskEvaluation {
         }
         if (csv != null) {
             StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
-                    + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward\n");
+                    + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward,failure\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
-                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
                             csvNumber(Math.toDegrees(loop.catchTilt())), flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
                             csvNumber(loop.releaseSpin()), csvNumber(Math.toDegrees(loop.arrivalTilt())), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
-                            loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop))));
+                            loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop)),
+                            loop.index() == 0 ? "" : flipTask.failure(loop).map(FlipTask.Failure::label).orElse("")));
                 }
             }
             writeCsv(rows);
@@ -159,6 +161,7 @@ final class FlipEvaluation extends TaskEvaluation {
             endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
         }
         List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
+        FlipTask.ThrowTally tally = putPerThrow(out, flipTask, allLoops);
         List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.RotationBin b : bins) {
@@ -183,6 +186,10 @@ final class FlipEvaluation extends TaskEvaluation {
                 + "%d throws that did not flip%n", request.controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
                 endings.get("dropped").asInt(), endings.get("caught_standing").asInt(), endings.get("no_flip").asInt());
+        console.printf(Locale.ROOT, "per throw (%s): %d of %d throws succeed (%.1f %%); failed: %d arrived end-first, %d dropped, "
+                + "%d caught standing, %d did not flip%n", method(), tally.successes(), tally.throwsMade(), 100 * tally.successRate(),
+                tally.failures().get(FlipTask.Failure.ARRIVED_END_FIRST), tally.failures().get(FlipTask.Failure.DROPPED),
+                tally.failures().get(FlipTask.Failure.CAUGHT_STANDING), tally.failures().get(FlipTask.Failure.NO_FLIP));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -204,6 +211,30 @@ final class FlipEvaluation extends TaskEvaluation {
             plotByArrival(arrivals, arrivalPlot);
             console.println("wrote " + arrivalPlot);
         }
+    }
+
+    /** Who chose the throws: the paper's method (the controller alone) or the planner on top of it. */
+    private String method() {
+        return request.plan() ? "planner-assisted" : "paper's method";
+    }
+
+    /**
+     * The throws the episodes made, each counted on its own (the throw-in left out): how many
+     * succeeded and why each failed one failed ({@link FlipTask#failure}), in {@code per_throw},
+     * labelled with who chose them ({@code method}).
+     */
+    private FlipTask.ThrowTally putPerThrow(ObjectNode out, FlipTask flipTask, List<LoopRecord> loops) {
+        FlipTask.ThrowTally tally = flipTask.tally(loops);
+        out.put("method", method());
+        ObjectNode perThrow = out.putObject("per_throw");
+        perThrow.put("throws", tally.throwsMade());
+        perThrow.put("successes", tally.successes());
+        putFinite(perThrow, "success_rate", tally.successRate());
+        ObjectNode failures = perThrow.putObject("failures");
+        for (FlipTask.Failure f : FlipTask.Failure.values()) {
+            failures.put(f.label(), tally.failures().get(f));
+        }
+        return tally;
     }
 
     /** Appends a bin of throws between two angles (rad, written in degrees) to a JSON array; returns it for more fields. */

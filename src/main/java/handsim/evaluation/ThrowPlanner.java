@@ -11,7 +11,6 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
-import handsim.sim.SimulationDiverged;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
@@ -118,7 +117,7 @@ public final class ThrowPlanner {
     private final PlannerConfig config;
     private final ThrowTask task;
     private final ThrowSpace space;
-    private final CatchThrowEpisode twin;
+    private final TwinEpisode twin;
     private int decisions;
     private int tries;
     private int unsolved;
@@ -144,7 +143,7 @@ public final class ThrowPlanner {
         this.config = config;
         this.task = task;
         this.space = space;
-        this.twin = twin;
+        this.twin = new TwinEpisode(twin);
     }
 
     public Stats stats() {
@@ -180,7 +179,7 @@ public final class ThrowPlanner {
             }
             PlannerConfig.Round r = config.rounds().get(round);
             for (int c = 0; c < r.candidates(); c++, k++) {
-                ThrowParameters candidate = k == 0 ? proposal : space.fromAction(vary(centre, r.spread(), rng));
+                ThrowParameters candidate = k == 0 ? proposal : space.fromAction(TwinEpisode.vary(centre, r.spread(), rng));
                 CatchStyle catching = r.catchStyles().isEmpty() ? config.catchStyle(k)
                         : r.catchStyles().get(c % r.catchStyles().size());
                 Trial t = tryThrow(now, new Choice(candidate, catching), policy, rng, config.depth());
@@ -246,21 +245,13 @@ public final class ThrowPlanner {
     /** The throw-in caught as {@code style} says in the twin, up to the first throw's decision: a success if it holds. */
     private Trial playThrowIn(CatchThrowEpisode.Checkpoint start, CatchStyle style) {
         tries++;
-        twin.restore(start);
-        twin.catchThrowInAs(style);
+        TwinEpisode.Outcome o = twin.playThrowIn(start, style);
         Choice choice = new Choice(null, style);
-        Observation next;
-        try {
-            next = twin.advanceToDecision();
-        } catch (SimulationDiverged e) {
+        if (o.failed()) {
             return Trial.failed(choice);
         }
-        if (twin.loops().isEmpty()) {
-            return Trial.failed(choice);
-        }
-        LoopRecord made = twin.loops().get(0);
-        boolean held = next != null && made.caught();
-        return new Trial(choice, held, held, 0, held ? alignment(next) : 0, made, null);
+        boolean held = o.next() != null && o.loop().caught();
+        return new Trial(choice, held, held, 0, held ? alignment(o.next()) : 0, o.loop(), null);
     }
 
     /** Compares the loop the live episode made with the chosen throw to the one it made in the twin. */
@@ -314,8 +305,8 @@ public final class ThrowPlanner {
      * {@code lookahead} in all.
      */
     private Continuation continuation(ThrowPolicy policy, SplittableRandom rng, int depth, Continuation hint) {
-        CatchThrowEpisode.Checkpoint next = twin.checkpoint();
-        Observation state = twin.decision();
+        CatchThrowEpisode.Checkpoint next = twin.episode().checkpoint();
+        Observation state = twin.episode().decision();
         if (hint != null && hint.state().sameValues(state)) {
             Trial t = judge(play(next, hint.choice()), policy, rng, depth - 1, hint.next());
             if (t.good()) {
@@ -325,7 +316,7 @@ public final class ThrowPlanner {
         ThrowParameters proposal = policy.decide(state);
         double[] centre = space.toAction(proposal);
         for (int j = 0; j < config.lookahead(); j++) {
-            ThrowParameters candidate = j == 0 ? proposal : space.fromAction(vary(centre, config.rounds().get(0).spread(), rng));
+            ThrowParameters candidate = j == 0 ? proposal : space.fromAction(TwinEpisode.vary(centre, config.rounds().get(0).spread(), rng));
             Trial t = tryThrow(next, new Choice(candidate, config.catchStyle(j)), policy, rng, depth - 1);
             if (t.good()) {
                 return new Continuation(state, t.choice(), t.next());
@@ -334,37 +325,15 @@ public final class ThrowPlanner {
         return null;
     }
 
-    private static double[] vary(double[] centre, double spread, SplittableRandom rng) {
-        double[] a = centre.clone();
-        for (int i = 0; i < a.length; i++) {
-            a[i] += spread * gaussian(rng);
-        }
-        return a;
-    }
-
-    private static double gaussian(SplittableRandom rng) {
-        return Math.sqrt(-2 * Math.log(1 - rng.nextDouble())) * Math.cos(2 * Math.PI * rng.nextDouble());
-    }
-
     /**
      * Plays {@code candidate} out in the twin, from {@code from} to the next throw's decision (where
      * the twin then waits) or the end of the episode. Without a lookahead a success counts as open.
      */
     private Trial play(CatchThrowEpisode.Checkpoint from, Choice candidate) {
         tries++;
-        throwEnd = null;
-        twin.restore(from);
-        Observation next;
-        try {
-            twin.decide(candidate.decision());
-            if (!config.catchBranches().isEmpty() && twin.advanceToThrowEnd()) {
-                throwEnd = twin.checkpoint();
-            }
-            next = twin.status() == CatchThrowEpisode.Status.RUNNING ? twin.advanceToDecision() : null;
-        } catch (SimulationDiverged e) {
-            return Trial.failed(candidate);
-        }
-        return played(from.loopCount(), candidate, next);
+        TwinEpisode.Outcome o = twin.play(from, candidate.decision(), !config.catchBranches().isEmpty());
+        throwEnd = o.throwEnd();
+        return played(candidate, o);
     }
 
     /**
@@ -374,30 +343,21 @@ public final class ThrowPlanner {
     private Trial playCatch(CatchThrowEpisode.Checkpoint end, int loopCount, Choice candidate) {
         tries++;
         branches++;
-        twin.restore(end);
-        twin.meetComingCatchAs(candidate.catching());
-        Observation next;
-        try {
-            next = twin.advanceToDecision();
-        } catch (SimulationDiverged e) {
-            return Trial.failed(candidate);
-        }
-        return played(loopCount, candidate, next);
+        return played(candidate, twin.playCatch(end, loopCount, candidate.catching()));
     }
 
-    /** The try whose loop is the twin's loop {@code index}, waiting at {@code next} (null: the episode ended). */
-    private Trial played(int index, Choice candidate, Observation next) {
-        if (twin.loops().size() <= index) {
+    /** The try of {@code candidate} that made {@code o}. */
+    private Trial played(Choice candidate, TwinEpisode.Outcome o) {
+        if (o.failed()) {
             return Trial.failed(candidate);
         }
-        LoopRecord made = twin.loops().get(index);
-        boolean success = next != null && task.success(made);
-        return new Trial(candidate, success, success, task.reward(made), next == null ? 0 : alignment(next), made, null);
+        boolean success = o.success(task);
+        return new Trial(candidate, success, success, task.reward(o.loop()), o.next() == null ? 0 : alignment(o.next()), o.loop(), null);
     }
 
     /** |long axis . palm z| (1 for an object without a long axis): 1 when the object lies across the palm. */
     private double alignment(Observation obs) {
-        var axis = twin.sim().objectSpec().longAxis();
+        var axis = twin.episode().sim().objectSpec().longAxis();
         if (axis.isEmpty()) {
             return 1;
         }

@@ -1,7 +1,9 @@
 /**
  * Evaluating a controller on a task: seeded catch-and-throw episodes ({@link
  * handsim.evaluation.CatchEvaluation}), the throw planner that tries each throw in a twin world
- * first ({@link handsim.evaluation.ThrowPlanner}), and one evaluation per kind of run of {@code
+ * first ({@link handsim.evaluation.ThrowPlanner}) and the teacher that labels a learner's
+ * decisions in the same twin ({@link handsim.evaluation.ThrowTeacher}; both play their tries in a
+ * {@link handsim.evaluation.TwinEpisode}), and one evaluation per kind of run of {@code
  * handsim evaluate}: {@link handsim.evaluation.HeightEvaluation} (the height errors, Fig. 5),
  * {@link handsim.evaluation.BoxEvaluation} (the box trials and their success map, Fig. 8),
  * {@link handsim.evaluation.FlipEvaluation} (flip-and-catch loops in a row, sec. 4.4) and {@link

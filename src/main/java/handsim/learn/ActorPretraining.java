@@ -26,7 +26,20 @@ public final class ActorPretraining {
      */
     public static Result fit(DdpgAgent agent, double[][] observations, double[][] actions, LearnerConfig.Pretrain config,
             long seed) {
+        return fit(agent, observations, actions, null, config, seed);
+    }
+
+    /**
+     * {@link #fit} with a weight per example (null: all 1): the training loss is the weighted sum
+     * of squared errors, so an example of weight 2 pulls as two copies of it would (the
+     * validation loss stays unweighted).
+     */
+    public static Result fit(DdpgAgent agent, double[][] observations, double[][] actions, double[] weights,
+            LearnerConfig.Pretrain config, long seed) {
         int n = observations.length, obsSize = agent.observationSize(), k = agent.actionSize();
+        if (weights != null && weights.length != n) {
+            throw new IllegalArgumentException("need one weight per example, got " + weights.length + " for " + n);
+        }
         if (actions.length != n || n < 2) {
             throw new IllegalArgumentException("need at least 2 examples and as many actions as observations, got "
                     + n + " and " + actions.length);
@@ -64,8 +77,9 @@ public final class ActorPretraining {
                 int[] idx = java.util.Arrays.copyOfRange(train, start, Math.min(nTrain, start + config.batchSize()));
                 INDArray out = Networks.forwardForBackprop(actor, inputs(agent, observations, idx));
                 INDArray err = out.sub(Networks.matrix(rows(actions, idx, k), idx.length, k));
-                sum += err.mul(err).sumNumber().doubleValue();
-                Networks.descend(actor, err.muli(2)); // d/da of the summed squared error
+                INDArray weighted = weights == null ? err : err.mulColumnVector(Networks.matrix(pick(weights, idx), idx.length, 1));
+                sum += err.mul(weighted).sumNumber().doubleValue();
+                Networks.descend(actor, weighted.muli(2)); // d/da of the (weighted) summed squared error
             }
             trainLoss[epoch] = sum / ((double) nTrain * k);
             valLoss[epoch] = nVal == 0 ? Double.NaN : loss(agent, observations, actions, val);
@@ -93,6 +107,14 @@ public final class ActorPretraining {
         double[] out = new double[idx.length * width];
         for (int r = 0; r < idx.length; r++) {
             System.arraycopy(data[idx[r]], 0, out, r * width, width);
+        }
+        return out;
+    }
+
+    private static double[] pick(double[] values, int[] idx) {
+        double[] out = new double[idx.length];
+        for (int r = 0; r < idx.length; r++) {
+            out[r] = values[idx[r]];
         }
         return out;
     }

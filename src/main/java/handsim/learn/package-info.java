@@ -4,7 +4,9 @@
  * the learner of paper sec. 3.7), its replay buffer, exploration noise and observation
  * normaliser, whole-agent checkpoints, the training driver and its metrics, the plain-Java
  * {@link handsim.learn.Policy} that is shipped and evaluated, CMA-ES (Hansen 2006) and actor
- * pretraining by regression for the imitation warm start of sec. 4.4.
+ * pretraining by regression for the imitation warm start of sec. 4.4, and imitation of a teacher
+ * by dataset aggregation ({@link handsim.learn.Dagger} over a {@link handsim.learn.TeachableEnv},
+ * its dataset on disk {@link handsim.learn.DemonstrationSet}).
  *
  * <p>Actions are always in [-1, 1]^k (the actor's tanh range); each task maps them onto its
  * own parameter box (see {@code handsim.control.ThrowSpace}). Imports {@code handsim.config}

@@ -48,6 +48,8 @@ public final class FlipTask implements ThrowTask {
      *
      * @param tolerance a flip is counted this much short of its angle (rad)
      * @param maxCatchTilt a catch counts when the long axis stands at most this far out of the palm's plane (rad)
+     * @param endFirstTilt a failed throw whose object came back to the hand with its long axis at least this far out
+     *     of the horizontal failed by arriving end-first (rad; {@link Failure#ARRIVED_END_FIRST})
      * @param sharpness the 10 of eq. (7) (1/m)
      * @param missWeight the 0.1 of eq. (7)'s miss term (1/m)
      * @param flipBonus r_flip of eq. (7)
@@ -56,15 +58,15 @@ public final class FlipTask implements ThrowTask {
      * @param objects the objects that can be flipped, by name
      * @param evaluationLoops the most flip-and-catch loops an evaluation episode runs to by default
      */
-    public record Config(double tolerance, double maxCatchTilt, double sharpness, double missWeight, double flipBonus, Vec3 targetOffset,
-            ThrowSpace space, Map<String, ObjectFlip> objects, int evaluationLoops) {
+    public record Config(double tolerance, double maxCatchTilt, double endFirstTilt, double sharpness, double missWeight, double flipBonus,
+            Vec3 targetOffset, ThrowSpace space, Map<String, ObjectFlip> objects, int evaluationLoops) {
 
         public Config {
             objects = Map.copyOf(objects);
         }
 
         public static Config parse(Json j) {
-            j.allow("comment", "maxCatchTiltComment", "evaluationLoopsComment");
+            j.allow("comment", "maxCatchTiltComment", "endFirstTiltComment", "evaluationLoopsComment");
             Json objs = j.get("objects");
             objs.allow("comment");
             Map<String, ObjectFlip> flips = new LinkedHashMap<>();
@@ -90,9 +92,9 @@ public final class FlipTask implements ThrowTask {
                 o.requireNoUnknownFields();
             }
             Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
-                    Math.toRadians(j.number("maxCatchTiltDeg", 0, 90)), j.positive("sharpness"),
-                    j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"), space, flips,
-                    j.integer("evaluationLoops", 0, 100000));
+                    Math.toRadians(j.number("maxCatchTiltDeg", 0, 90)), Math.toRadians(j.number("endFirstTiltDeg", 0, 90)),
+                    j.positive("sharpness"), j.number("missWeight", 0, 100), j.number("flipBonus", 0, 100), j.vec3("targetOffset"),
+                    space, flips, j.integer("evaluationLoops", 0, 100000));
             j.requireNoUnknownFields();
             return c;
         }
@@ -254,6 +256,70 @@ public final class FlipTask implements ThrowTask {
             out.add(new ArrivalBin(b * ARRIVAL_BIN, (b + 1) * ARRIVAL_BIN, made[b], succeeded[b], dropped[b], standing[b]));
         }
         return out;
+    }
+
+    /**
+     * Why a throw failed the task, one reason per throw, the first that applies: it came back
+     * end-first (its turn in flight was wrong, and the catch could only drop it or hold it
+     * standing), it was dropped, it was caught standing, or it was caught lying but turned too
+     * little to flip.
+     */
+    public enum Failure {
+        ARRIVED_END_FIRST, DROPPED, CAUGHT_STANDING, NO_FLIP;
+
+        /** The name in the JSON and CSV: {@code arrived_end_first}, {@code dropped}, ... */
+        public String label() {
+            return name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+
+    /** Why the throw of {@code loop} (index >= 1) failed, or empty when it succeeded. */
+    public Optional<Failure> failure(LoopRecord loop) {
+        if (success(loop)) {
+            return Optional.empty();
+        }
+        if (loop.arrivalTilt() >= config.endFirstTilt()) {
+            return Optional.of(Failure.ARRIVED_END_FIRST);
+        }
+        return Optional.of(!loop.caught() ? Failure.DROPPED : !properCatch(loop) ? Failure.CAUGHT_STANDING : Failure.NO_FLIP);
+    }
+
+    /**
+     * The throws of some loops (the throw-in left out): how many were made, how many succeeded,
+     * and how many failed for each {@link Failure} (every reason present, zeros included).
+     */
+    public record ThrowTally(int throwsMade, int successes, Map<Failure, Integer> failures) {
+
+        public ThrowTally {
+            failures = Map.copyOf(failures);
+        }
+
+        /** Successes per throw made (NaN for no throws). */
+        public double successRate() {
+            return throwsMade == 0 ? Double.NaN : (double) successes / throwsMade;
+        }
+    }
+
+    /** How the throws of {@code loops} ended (loop 0, the throw-in, left out). */
+    public ThrowTally tally(List<LoopRecord> loops) {
+        Map<Failure, Integer> failures = new java.util.EnumMap<>(Failure.class);
+        for (Failure f : Failure.values()) {
+            failures.put(f, 0);
+        }
+        int made = 0, succeeded = 0;
+        for (LoopRecord l : loops) {
+            if (l.index() == 0) {
+                continue;
+            }
+            made++;
+            Optional<Failure> f = failure(l);
+            if (f.isEmpty()) {
+                succeeded++;
+            } else {
+                failures.merge(f.get(), 1, Integer::sum);
+            }
+        }
+        return new ThrowTally(made, succeeded, failures);
     }
 
     /** Held in the hand and lying in it: the long axis at most maxCatchTilt out of the palm's plane. */

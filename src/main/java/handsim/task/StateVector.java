@@ -5,6 +5,7 @@ import handsim.control.Observation;
 import handsim.kin.Frame;
 import handsim.math.Quat;
 import handsim.math.Vec3;
+import handsim.model.HandModel;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -25,13 +26,18 @@ import java.util.Optional;
  * (xx, yy, zz, xy, xz, yz), which are the same for a and -a (a can end for end is the same can)
  * and ignore the spin about the axis, which a can or club does not care about; zeros for an object
  * without a long axis (a sphere's orientation does not matter to its throw).</li>
+ * <li>{@link Encoding#EXTENDED}: the continuous state followed by what it leaves out of a throw's
+ * start: the object's velocity and angular velocity in the palm frame ({@code R_h^T v_p}, {@code
+ * R_h^T w_p}), every joint angle of the arm and hand (model DOF order, rad), and which bodies of
+ * the hand touch the object (1 or 0 per body, model order: the contact joints of the last
+ * controller period). Its length depends on the model ({@link Hand}).</li>
  * </ul>
  */
 public final class StateVector {
 
     /** How the state is written; a policy file records the one it was trained with. */
     public enum Encoding {
-        PAPER(12), CONTINUOUS(18);
+        PAPER(12), CONTINUOUS(18), EXTENDED(24);
 
         private final int baseSize;
 
@@ -39,9 +45,14 @@ public final class StateVector {
             this.baseSize = baseSize;
         }
 
-        /** Entries before the goal. */
+        /** Entries before the goal and the hand's ({@link #handSized}). */
         public int baseSize() {
             return baseSize;
+        }
+
+        /** Whether the state also has an entry per joint and per hand body, so that its length depends on the model. */
+        public boolean handSized() {
+            return this == EXTENDED;
         }
 
         /** The name in configs and policy files: {@code paper} or {@code continuous}. */
@@ -56,7 +67,7 @@ public final class StateVector {
                     return e;
                 }
             }
-            throw new IllegalArgumentException("must be paper or continuous, got \"" + label + "\"");
+            throw new IllegalArgumentException("must be paper, continuous or extended, got \"" + label + "\"");
         }
 
         /**
@@ -72,13 +83,44 @@ public final class StateVector {
         }
     }
 
+    /**
+     * The sizes of the hand the extended state describes: its joint angles (the model's DOFs) and a
+     * contact entry per body.
+     */
+    public record Hand(int joints, int bodies) {
+
+        public Hand {
+            if (joints < 0 || bodies < 0 || bodies > Long.SIZE) {
+                throw new IllegalArgumentException("a hand of " + joints + " joints and " + bodies + " bodies (at most " + Long.SIZE + ")");
+            }
+        }
+
+        /** The sizes of {@code model}. */
+        public static Hand of(HandModel model) {
+            return new Hand(model.dofCount(), model.bodies().size());
+        }
+    }
+
     private final Encoding encoding;
     private final Vec3 longAxis;
+    private final Hand hand;
 
-    /** The state of {@code encoding} for an object with the given long axis (object frame). */
+    /** The state of {@code encoding} (not a {@link Encoding#handSized} one) for an object with the given long axis (object frame). */
     public StateVector(Encoding encoding, Optional<Vec3> longAxis) {
+        this(encoding, longAxis, null);
+    }
+
+    /**
+     * The state of {@code encoding} for an object with the given long axis (object frame) in
+     * {@code hand} (needed by a {@link Encoding#handSized} encoding, else unused and may be null).
+     */
+    public StateVector(Encoding encoding, Optional<Vec3> longAxis, Hand hand) {
+        if (encoding.handSized() && hand == null) {
+            throw new IllegalArgumentException("the " + encoding.label() + " state needs the hand's joint and body counts");
+        }
         this.encoding = encoding;
         this.longAxis = longAxis.map(Vec3::normalized).orElse(null);
+        this.hand = encoding.handSized() ? hand : null;
     }
 
     public Encoding encoding() {
@@ -87,12 +129,17 @@ public final class StateVector {
 
     /** Entries of the state with a goal of {@code goalSize} entries. */
     public int size(int goalSize) {
-        return encoding.baseSize() + goalSize;
+        return baseSize() + goalSize;
+    }
+
+    /** Entries before the goal. */
+    private int baseSize() {
+        return encoding.baseSize() + (hand == null ? 0 : hand.joints() + hand.bodies());
     }
 
     /** The state for {@code obs} and the goal of the throw about to be made. */
     public double[] encode(Observation obs, double[] goal) {
-        int base = encoding.baseSize();
+        int base = baseSize();
         double[] s = new double[base + goal.length];
         Frame palm = obs.palm();
         Quat palmRotation = palm.rotation();
@@ -114,6 +161,18 @@ public final class StateVector {
                 s[15] = a.x() * a.y();
                 s[16] = a.x() * a.z();
                 s[17] = a.y() * a.z();
+            }
+            if (hand != null) {
+                put(s, 18, palmRotation.inverseRotate(obs.object().velocity()));
+                put(s, 21, palmRotation.inverseRotate(obs.object().angularVelocity()));
+                if (obs.q().length != hand.joints()) {
+                    throw new IllegalArgumentException("the observation has " + obs.q().length + " joint angles, the state "
+                            + hand.joints());
+                }
+                System.arraycopy(obs.q(), 0, s, 24, hand.joints());
+                for (int b = 0; b < hand.bodies(); b++) {
+                    s[24 + hand.joints() + b] = (obs.touchedBodies() >>> b & 1L) == 1 ? 1 : 0;
+                }
             }
         }
         System.arraycopy(goal, 0, s, base, goal.length);

@@ -82,15 +82,49 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
     }
 
     /**
+     * The policy of {@code file} to start a learner on {@code envs} with ({@code --init-actor});
+     * refused, naming the file, when it was trained for another task, object, state or throw box.
+     */
+    public static ThrowPolicyFile initActor(Path file, ThrowEnvFactory envs) {
+        ThrowPolicyFile f = load(file);
+        String mismatch = f.mismatch(envs);
+        if (mismatch != null) {
+            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
+        }
+        return f;
+    }
+
+    /**
+     * Why this policy cannot start a learner on {@code envs} (another task, object, state encoding
+     * or throw box), or null when it can.
+     */
+    private String mismatch(ThrowEnvFactory envs) {
+        return !task.equals(envs.task()) || !object.equals(envs.object().name())
+                ? "was trained for the " + task + " task with a " + object + ", this run is the " + envs.task()
+                        + " task with a " + envs.object().name()
+                : state != envs.state().encoding() ? "reads the " + state.label() + " state, this run gives the "
+                        + envs.state().encoding().label() + " state (run.state)"
+                : !space.sameBox(envs.space()) ? "throws in " + space + ", this run's task in " + envs.space() : null;
+    }
+
+    /**
      * The policy as the controller's throw policy for {@code task}; fails with a message naming
      * the mismatch if it was trained for another task, object or state.
      */
     public LearnedThrowPolicy forTask(ThrowTask task, ObjectSpec object) {
+        return forTask(task, object, null);
+    }
+
+    /**
+     * {@link #forTask(ThrowTask, ObjectSpec)} in a hand of the given sizes (needed by a policy
+     * that reads the extended state, {@link StateVector.Encoding#handSized}; else may be null).
+     */
+    public LearnedThrowPolicy forTask(ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
         if (!this.task.equals(task.name()) || !this.object.equals(object.name())) {
             throw new IllegalArgumentException("this policy was trained for the " + this.task + " task with a " + this.object
                     + ", not the " + task.name() + " task with a " + object.name());
         }
-        StateVector encoder = new StateVector(state, object.longAxis());
+        StateVector encoder = new StateVector(state, object.longAxis(), hand);
         int size = encoder.size(task.goalSize());
         if (policy.observationSize() != size) {
             throw new IllegalArgumentException("this policy reads " + policy.observationSize() + " state entries, the "

@@ -134,16 +134,7 @@ public final class TrainRun {
      * encoding and throw space, and a set {@code pretrain.policyObservations}.
      */
     private static Policy initPolicy(Path file, TrainConfig config, ThrowEnvFactory envs) {
-        ThrowPolicyFile f = ThrowPolicyFile.load(file);
-        String mismatch = !f.task().equals(envs.task()) || !f.object().equals(envs.object().name())
-                ? "was trained for the " + f.task() + " task with a " + f.object() + ", this run is the " + envs.task()
-                        + " task with a " + envs.object().name()
-                : f.state() != envs.state().encoding() ? "reads the " + f.state().label() + " state, this run gives the "
-                        + envs.state().encoding().label() + " state (run.state)"
-                : !f.space().sameBox(envs.space()) ? "throws in " + f.space() + ", this run's task in " + envs.space() : null;
-        if (mismatch != null) {
-            throw new IllegalArgumentException("--init-actor " + file + " " + mismatch);
-        }
+        ThrowPolicyFile f = ThrowPolicyFile.initActor(file, envs);
         if (config.learner().pretrain().policyObservations() == 0) {
             throw new IllegalArgumentException("--init-actor " + file + " is a policy: set pretrain.policyObservations, "
                     + "how many observations its normaliser's statistics count as");

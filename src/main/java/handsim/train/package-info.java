@@ -1,7 +1,8 @@
 /**
  * Learning the throws: the physics tasks as {@link handsim.learn.Env environments} (one decision
  * per THROW, sec. 3.7), the learned throw policy the controller uses, training runs with their
- * run folders, and the shipped policies. It joins {@code handsim.task} (episodes, tasks) and
+ * run folders (DDPG's {@link handsim.train.TrainRun}, DAgger's {@link handsim.train.DaggerRun}
+ * with its twin-world teacher, {@code handsim.evaluation.ThrowTeacher}), and the shipped policies. It joins {@code handsim.task} (episodes, tasks) and
  * {@code handsim.learn} (DDPG, CMA-ES), which do not know each other.
  *
  * <p>Imports {@code handsim.math}, {@code handsim.config}, {@code handsim.sim} (the interface),

@@ -39,6 +39,53 @@ class CommandsTest {
     }
 
     @Test
+    void demoHeadlessFlipsACanWithTheShippedFlipPolicyAndSaysHowEachThrowEnded(@TempDir Path dir) throws Exception {
+        String text = runPrinting("demo", "--headless", "--object", "can", "--loops", "2", "--seed", "1", "--out", dir.toString());
+        assertTrue(text.contains("flip task, can, the learned controller (models/policies/flip-can.json, alone)"), text);
+        assertTrue(text.contains("throw   1/2: turned") && text.contains("throw   2/2: turned"), text);
+        JsonNode summary = Json.load(dir.resolve("summary.json")).node();
+        assertEquals("flip", summary.get("task").asText());
+        assertEquals(2, summary.get("throws").asInt());
+        int failed = 0;
+        for (JsonNode f : summary.get("failures")) {
+            failed += f.asInt();
+        }
+        assertEquals(2, summary.get("successes").asInt() + failed, "each throw a success or a failure for one reason");
+        java.util.List<String> rows = Files.readAllLines(dir.resolve("loops.csv"));
+        assertEquals(3, rows.size(), "a header and one row per throw");
+        assertDrawn(dir.resolve("rotation.png"));
+        assertEquals(2, Main.run("demo", "--headless", "--object", "club", "--heights", "1:1.2", "--out", dir.resolve("x").toString()),
+                "a flipped object has no height goals");
+    }
+
+    @Test
+    void daggerWritesItsRoundsAndPoliciesAndAResumedRunPlaysNothingTwice(@TempDir Path dir) throws Exception {
+        String text = runPrinting("dagger", "--config", "configs/train/flip-dagger.json", "--runs", dir.toString(), "--set",
+                "dagger.rounds=1", "--set", "dagger.episodesPerRound=1", "--set", "dagger.maxDecisionsPerEpisode=2", "--set",
+                "run.workers=1", "--set", "pretrain.epochs=2");
+        assertTrue(text.contains("round 0: the learner's own throw succeeded at"), text);
+        Path run;
+        try (var list = Files.list(dir)) {
+            run = list.filter(p -> p.getFileName().toString().startsWith("dagger__flip-dagger__1__")).findFirst().orElseThrow();
+        }
+        java.util.List<String> rounds = Files.readAllLines(run.resolve("rounds.csv"));
+        assertEquals(2, rounds.size(), "a header and round 0: " + rounds);
+        assertEquals("0,1,2,", rounds.get(1).substring(0, 6), "round 0: one episode of two decisions (labels executed)");
+        java.util.List<String> decisions = Files.readAllLines(run.resolve("demonstrations.csv"));
+        assertEquals(3, decisions.size(), "a header and the two decisions");
+        assertTrue(Files.readAllLines(run.resolve("demonstrations-trials.csv")).size() >= 2, "the teacher's trials");
+        handsim.train.ThrowPolicyFile policy = handsim.train.ThrowPolicyFile.load(run.resolve("policies/round-00.json"));
+        assertEquals("flip", policy.task());
+        assertEquals(handsim.task.StateVector.Encoding.CONTINUOUS, policy.state());
+        String again = runPrinting("dagger", "--resume", run.toString());
+        assertTrue(again.contains("rounds 1..0 of 1"), "nothing left to play: " + again);
+        assertEquals(decisions, Files.readAllLines(run.resolve("demonstrations.csv")), "nothing played twice");
+        assertEquals(2, Main.run("dagger", "--resume", run.toString(), "--set", "dagger.rounds=2"), "a resumed run keeps its config");
+        assertEquals(2, Main.run("dagger", "--config", "configs/train/flip-dagger.json", "--set", "dagger.weighting=loud", "--runs",
+                dir.toString()), "a bad field is refused");
+    }
+
+    @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
                 "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());
@@ -89,6 +136,20 @@ class CommandsTest {
         }
         assertTrue(arrived <= summary.get("throws").asInt(), summary.toString());
         assertEquals(summary.get("loops_completed").asInt(), arrivedSuccesses, summary.toString());
+        // per throw: every throw is a success or fails for one reason, as each CSV row names it; the
+        // learned controller alone is the paper's method
+        JsonNode perThrow = summary.get("per_throw");
+        assertEquals("paper's method", summary.get("method").asText());
+        assertEquals(summary.get("throws").asInt(), perThrow.get("throws").asInt());
+        assertEquals(summary.get("loops_completed").asInt(), perThrow.get("successes").asInt());
+        int failureAt = header.indexOf("failure");
+        for (String reason : java.util.List.of("arrived_end_first", "dropped", "caught_standing", "no_flip")) {
+            long inCsv = rows.subList(2, rows.size()).stream().filter(r -> r.split(",", -1)[failureAt].equals(reason)).count();
+            assertEquals(inCsv, perThrow.get("failures").get(reason).asInt(), reason + ": " + rows);
+        }
+        long failed = rows.subList(2, rows.size()).stream().filter(r -> !r.split(",", -1)[failureAt].isEmpty()).count();
+        assertEquals(perThrow.get("throws").asInt() - perThrow.get("successes").asInt(), failed, rows.toString());
+        assertTrue(text.contains("per throw (paper's method)"), text);
     }
 
     @Test
@@ -105,6 +166,8 @@ class CommandsTest {
         assertEquals(2, summary.get("loops_completed").asInt(), text);
         assertEquals(0, planner.get("mispredicted").asInt(), "each live throw did what it did in the twin world");
         assertTrue(text.contains("planner: 2 throws chosen from"), text);
+        assertEquals("planner-assisted", summary.get("method").asText(), "a planned figure never stands for the paper's method");
+        assertTrue(text.contains("per throw (planner-assisted): 2 of 2 throws succeed"), text);
         assertTrue(Main.run("evaluate", "--task", "height", "--plan") != 0, "the planner plans flip throws only");
         assertTrue(Main.run("evaluate", "--task", "flip", "--object", "can", "--plan", "--copies", "2") != 0, "no planned copies");
     }

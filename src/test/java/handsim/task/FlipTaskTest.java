@@ -100,6 +100,28 @@ class FlipTaskTest {
     }
 
     @Test
+    void eachFailedThrowFailsForOneReasonTheEndFirstArrivalFirst() {
+        // configs/tasks/flip.json: a failed throw that came back with its axis 60 deg or more out of the
+        // horizontal arrived end-first, whatever the catch did; otherwise the catch's outcome names it
+        assertEquals(java.util.Optional.empty(), can.failure(arriving(10, true, 10)), "flipped (180 deg) and caught lying");
+        assertEquals(FlipTask.Failure.ARRIVED_END_FIRST, can.failure(arriving(70, true, 80)).orElseThrow());
+        assertEquals(FlipTask.Failure.ARRIVED_END_FIRST, can.failure(arriving(60, false, 0)).orElseThrow(), "60 deg is end-first");
+        assertEquals(FlipTask.Failure.DROPPED, can.failure(arriving(59, false, 0)).orElseThrow());
+        assertEquals(FlipTask.Failure.DROPPED, can.failure(flight(180, false, target)).orElseThrow(), "never came back (NaN)");
+        assertEquals(FlipTask.Failure.CAUGHT_STANDING, can.failure(arriving(40, true, 50)).orElseThrow());
+        assertEquals(FlipTask.Failure.NO_FLIP, can.failure(flight(90, true, target, 10)).orElseThrow());
+        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
+                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+        FlipTask.ThrowTally t = can.tally(List.of(throwIn, arriving(10, true, 10), arriving(70, true, 80), arriving(59, false, 0),
+                flight(90, true, target, 10), arriving(5, true, 20)));
+        assertEquals(5, t.throwsMade(), "the throw-in is no throw");
+        assertEquals(2, t.successes());
+        assertEquals(0.4, t.successRate(), 1e-12);
+        assertEquals(java.util.Map.of(FlipTask.Failure.ARRIVED_END_FIRST, 1, FlipTask.Failure.DROPPED, 1,
+                FlipTask.Failure.CAUGHT_STANDING, 0, FlipTask.Failure.NO_FLIP, 1), t.failures());
+    }
+
+    @Test
     void rewardFollowsEquation7() {
         Vec3 off = target.plus(new Vec3(0.05, 0, 0));
         // flipped and caught 5 cm from p_d: exp(-10 * 0.05) + r_flip

@@ -83,9 +83,37 @@ class StateVectorTest {
     }
 
     @Test
+    void theExtendedStateAddsTheObjectsMotionInThePalmFrameTheJointAnglesAndTheTouchingBodies() {
+        StateVector.Hand hand = new StateVector.Hand(3, 5);
+        StateVector s = new StateVector(StateVector.Encoding.EXTENDED, Optional.of(CAN_AXIS), hand);
+        StateVector continuous = new StateVector(StateVector.Encoding.CONTINUOUS, Optional.of(CAN_AXIS));
+        // palm a quarter turn about world y: palm x is world -z, palm z world x, palm y world y
+        Quat palm = Quat.fromAxisAngle(new Vec3(0, 1, 0), Math.PI / 2);
+        RigidState can = new RigidState(new Vec3(0.1, 0.6, 0.35), Quat.IDENTITY, new Vec3(0, 0, 2), new Vec3(3, 0, 0));
+        long touching = 0b10010; // bodies 1 and 4
+        Observation obs = new Observation(0, new double[] {0.1, -0.2, 0.3}, new double[3], new Frame(new Vec3(0.05, 0.62, 0.33), palm),
+                Vec3.ZERO, can, touching);
+        double[] x = s.encode(obs, GOAL);
+        assertEquals(18 + 6 + 3 + 5 + 1, x.length, "continuous, object motion, 3 joints, 5 bodies, the goal");
+        assertEquals(x.length - 1, s.size(0));
+        assertArrayEquals(continuous.encode(obs, new double[0]), java.util.Arrays.copyOfRange(x, 0, 18), 0,
+                "the extended state begins with the continuous one");
+        // world velocity (0, 0, 2) along world z is palm -x; angular velocity about world x is about palm z
+        assertArrayEquals(new double[] {-2, 0, 0}, java.util.Arrays.copyOfRange(x, 18, 21), 1e-12);
+        assertArrayEquals(new double[] {0, 0, 3}, java.util.Arrays.copyOfRange(x, 21, 24), 1e-12);
+        assertArrayEquals(new double[] {0.1, -0.2, 0.3}, java.util.Arrays.copyOfRange(x, 24, 27), 0);
+        assertArrayEquals(new double[] {0, 1, 0, 0, 1}, java.util.Arrays.copyOfRange(x, 27, 32), 0);
+        assertEquals(1.2, x[32], 0);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new StateVector(StateVector.Encoding.EXTENDED, Optional.of(CAN_AXIS)));
+        assertTrue(e.getMessage().contains("joint and body counts"), e.getMessage());
+    }
+
+    @Test
     void encodingsAreNamedInConfigs() {
         assertEquals(StateVector.Encoding.CONTINUOUS, StateVector.Encoding.parse("continuous"));
         assertEquals(StateVector.Encoding.PAPER, StateVector.Encoding.parse("paper"));
+        assertEquals(StateVector.Encoding.EXTENDED, StateVector.Encoding.parse("extended"));
         assertEquals(StateVector.Encoding.PAPER, StateVector.Encoding.parse("PAPER"), "the enum's own name reads back too");
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> StateVector.Encoding.parse("euler"));
         assertTrue(e.getMessage().contains("euler"), e.getMessage());

@@ -73,6 +73,6 @@ class ShippedPoliciesTest {
         Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,
-                ThrowPolicyFile.load(file).forTask(t, TestSupport.object(object)));
+                ThrowPolicyFile.load(file).forTask(t, TestSupport.object(object), handsim.task.StateVector.Hand.of(TestSupport.model())));
     }
 }
