@@ -71,12 +71,15 @@ final class HeightEvaluation extends TaskEvaluation {
             o.put("max_penetration_mm", r.maxPenetration() * 1e3);
             o.put("peak_torque_ratio", r.peakTorqueRatio());
         }
+        // with no throw there is no height error to average (--loops 0): say so rather than print NaN
+        String heightErrors = errors.count() == 0 ? "0 throws, no height errors"
+                : String.format(Locale.ROOT, "%d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%",
+                        errors.count(), errors.mean(), errors.absMean(), errors.absP95(), 100 * errors.within(0.1));
         console.printf(Locale.ROOT, "%s, %s controller, %d episodes: first catch %.0f %%, loops completed %d (mean %.2f), "
-                + "drops %d, loops out of time %d; %d throws: height error mean %+.4f m, |error| mean %.4f m, p95 %.4f m, within 0.1 m %.1f %%; "
-                + "max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f%n", request.object(), request.controller(),
-                request.episodes(), 100 * out.get("first_catch_rate").asDouble(), out.get("loops_completed").asInt(),
-                out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(), out.get("time_outs").asInt(), errors.count(),
-                errors.mean(), errors.absMean(), errors.absP95(), 100 * errors.within(0.1), out.get("max_limit_excess_deg").asDouble(),
+                + "drops %d, loops out of time %d; %s; max limit excess %.2f deg, max penetration %.1f mm, peak torque ratio %.2f%n",
+                request.object(), request.controller(), request.episodes(), 100 * out.get("first_catch_rate").asDouble(),
+                out.get("loops_completed").asInt(), out.get("loops_completed_mean").asDouble(), out.get("drops").asInt(),
+                out.get("time_outs").asInt(), heightErrors, out.get("max_limit_excess_deg").asDouble(),
                 out.get("max_penetration_mm").asDouble(), out.get("peak_torque_ratio").asDouble());
         writeCsv(rows);
         if (request.plot() != null && errors.count() > 0) {

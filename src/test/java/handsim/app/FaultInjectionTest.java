@@ -109,7 +109,7 @@ class FaultInjectionTest {
     }
 
     @Test
-    void anEvaluationOfNoLoopsWritesNullWhereAFigureHasNoValue() throws IOException {
+    void anEvaluationOfNoLoopsWritesNullWhereAFigureHasNoValueAndPrintsNoNaN() throws IOException {
         Path json = tmp.resolve("none.json");
         CliRun r = CliRun.of("evaluate", "--loops", "0", "--workers", "1", "--json", json.toString());
         assertEquals(0, r.status(), r.toString());
@@ -118,6 +118,7 @@ class FaultInjectionTest {
         JsonNode summary = new ObjectMapper().readTree(text); // strict JSON
         assertTrue(summary.get("height_error_mean").isNull(), "a mean over no throws: " + summary);
         assertEquals(0, summary.get("throws").asInt());
+        assertFalse(r.out().contains("NaN"), "the console summary has no NaN either: " + r.out());
     }
 
     @Test
