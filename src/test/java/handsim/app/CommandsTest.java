@@ -219,12 +219,12 @@ class CommandsTest {
     void renderDrawsATasksSceneWithItsShippedPolicyAndRejectsAnUnknownTask(@TempDir Path dir) throws Exception {
         // needs an X display, as RenderSmokeTest: the test command runs under xvfb-run
         String text = runPrinting("render", "--task", "flip", "--object", "can", "--controller", "learned", "--seed", "130",
-                "--seconds", "3", "--fps", "2", "--width", "160", "--height", "120", "--out", dir.toString());
+                "--seconds", "4", "--fps", "2", "--width", "160", "--height", "120", "--out", dir.toString());
         // the scene view shows for the same options: the flip task with the shipped can policy (a fallback
         // would print the scene it fell back to, the height task or the nominal controller)
         assertTrue(text.contains("render: flip task, can, learned controller, seed 130"), text);
-        assertTrue(text.contains("wrote 6 frames"), text);
-        // by 3 s the first throw of seed 130 is caught (it turns 172 deg, measured): the status reports its turn and
+        assertTrue(text.contains("wrote 8 frames"), text);
+        // by 3 s the first throw of seed 130 is caught (it turns 301 deg, measured): the status reports its turn and
         // how far the can stood out of the horizontal when it came back
         assertTrue(text.contains("deg in flight, came back"), text);
         var frame = ImageIO.read(dir.resolve("00001.png").toFile());
