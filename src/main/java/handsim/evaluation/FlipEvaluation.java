@@ -27,19 +27,8 @@ import java.util.stream.Collectors;
  */
 final class FlipEvaluation extends TaskEvaluation {
 
-    private final String object;
-    private final long seed;
-    private final int loops;
-    private final Path plot;
-    private final Path csv;
-
     FlipEvaluation(EvaluationRequest request, EvaluationSetup setup) {
         super(request, setup);
-        object = request.object();
-        seed = request.seed();
-        loops = request.loops();
-        plot = request.plot();
-        csv = request.csv();
     }
 
     /** How a flip episode ended: its last throw dropped, caught standing, caught lying without a flip, or the cap reached. */
@@ -92,6 +81,11 @@ final class FlipEvaluation extends TaskEvaluation {
 
     @Override
     public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
+        String object = request.object();
+        long seed = request.seed();
+        int loops = request.loops();
+        Path plot = request.plot();
+        Path csv = request.csv();
         Tasks tasks = setup.tasks();
         FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
         PlannerConfig planning = setup.planning();
@@ -261,7 +255,7 @@ final class FlipEvaluation extends TaskEvaluation {
             made[i] = b.throwsMade();
             succeeded[i] = b.successes();
         }
-        new Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", request.controllerLabel(), object),
+        new Plot(String.format(Locale.ROOT, "Throws by flight rotation, %s controller, %s", request.controllerLabel(), request.object()),
                 "rotation of the long axis in flight (deg, bin centre)", "throws")
                 .add("throws", x, made, Plot.GREY, Plot.Style.BARS)
                 .add("flipped and caught lying in the hand", x, succeeded, Plot.BLUE, Plot.Style.BARS)
@@ -270,6 +264,7 @@ final class FlipEvaluation extends TaskEvaluation {
 
     /** A second picture next to --plot: NAME-suffix.png. */
     private Path besidePlot(String suffix) {
+        Path plot = request.plot();
         return plot.resolveSibling(plot.getFileName().toString().replaceFirst("\\.png$", "") + suffix + ".png");
     }
 
@@ -289,7 +284,7 @@ final class FlipEvaluation extends TaskEvaluation {
             lying[i] = b.successes() + b.standing();
             notDropped[i] = b.throwsMade() - b.drops();
         }
-        new Plot(String.format(Locale.ROOT, "Throws by arrival tilt, %s controller, %s", request.controllerLabel(), object),
+        new Plot(String.format(Locale.ROOT, "Throws by arrival tilt, %s controller, %s", request.controllerLabel(), request.object()),
                 "long axis out of the horizontal at the first touch of the catch (deg, bin centre)", "throws")
                 .add("dropped", x, all, Plot.RED, Plot.Style.BARS)
                 .add("caught, not flipped", x, notDropped, Plot.GREY, Plot.Style.BARS)

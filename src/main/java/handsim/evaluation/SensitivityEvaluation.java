@@ -29,31 +29,21 @@ import java.util.stream.DoubleStream;
  */
 final class SensitivityEvaluation extends TaskEvaluation {
 
-    private final String task;
-    private final String object;
-    private final String controller;
-    private final long seed;
-    private final int loops;
-    private final int episodes;
-    private final int copies;
-    private final double nudge;
-    private final Path plot;
-
     SensitivityEvaluation(EvaluationRequest request, EvaluationSetup setup) {
         super(request, setup);
-        task = request.task();
-        object = request.object();
-        controller = request.controller();
-        seed = request.seed();
-        loops = request.loops();
-        episodes = request.episodes();
-        copies = request.copies();
-        nudge = request.nudge();
-        plot = request.plot();
     }
 
     @Override
     public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
+        String task = request.task();
+        String object = request.object();
+        String controller = request.controller();
+        long seed = request.seed();
+        int loops = request.loops();
+        int episodes = request.episodes();
+        int copies = request.copies();
+        double nudge = request.nudge();
+        Path plot = request.plot();
         Tasks tasks = setup.tasks();
         ObjectSpec spec = setup.object();
         List<List<Vec3>> nudges = new ArrayList<>();
