@@ -83,11 +83,8 @@ public final class CatchPlanner {
 
     /** {@link #plan} meeting the object as {@code style} says instead of this planner's own way. */
     public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach, CatchStyle style) {
-        double t = ballistics.descendingCrossing(object.position(), object.velocity(), planeHeight + style.planeShift());
-        if (Double.isNaN(t) || t < minDuration) {
-            // too soon (or below the plane already): meet it later, lower down
-            t = minDuration;
-        }
+        double t = style.level() == null || spec.longAxis().isEmpty() ? interceptionTime(object, style.planeShift())
+                : levelInterceptionTime(object, spec, style.planeShift(), style.level());
         Vec3 p = ballistics.position(object.position(), object.velocity(), t);
         Vec3 v = ballistics.velocity(object.velocity(), t);
         Optional<Vec3> axis = longAxisAt(object, spec, t);
@@ -95,6 +92,42 @@ public final class CatchPlanner {
         Quat preferred = handRotation(back, axis, readyRotation);
         Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()), axis.isPresent(), reach);
         return new Plan(t, palm, v.times(style.velocityFraction()), p, v);
+    }
+
+    /** When the object's centre crosses the plane raised by {@code shift} going down; not sooner than the shortest CATCH. */
+    private double interceptionTime(RigidState object, double shift) {
+        double t = ballistics.descendingCrossing(object.position(), object.velocity(), planeHeight + shift);
+        // too soon (or below the plane already): meet it later, lower down
+        return Double.isNaN(t) || t < minDuration ? minDuration : t;
+    }
+
+    /**
+     * The interception time on the plane nearest {@code shift}, within the search's reach below and above, where
+     * the long axis is predicted ({@link #longAxisAt}) to lie level within its tilt; or, when it
+     * is level on none of them, on the plane where it is nearest to level.
+     */
+    private double levelInterceptionTime(RigidState object, ObjectSpec spec, double shift, CatchStyle.Level level) {
+        int below = (int) Math.floor(level.below() / level.step() + 1e-9);
+        int above = (int) Math.floor(level.above() / level.step() + 1e-9);
+        double bestTime = interceptionTime(object, shift);
+        double bestTilt = Double.POSITIVE_INFINITY;
+        for (int k = 0; k <= 2 * Math.max(below, above); k++) {
+            // shift, +step, -step, +2 step, ... within the reach either way
+            int n = (k % 2 == 1 ? 1 : -1) * ((k + 1) / 2);
+            if (n > above || -n > below) {
+                continue;
+            }
+            double t = interceptionTime(object, shift + n * level.step());
+            double tilt = Math.asin(Math.min(1, Math.abs(longAxisAt(object, spec, t).orElseThrow().y())));
+            if (tilt <= level.tilt()) {
+                return t;
+            }
+            if (tilt < bestTilt) {
+                bestTilt = tilt;
+                bestTime = t;
+            }
+        }
+        return bestTime;
     }
 
     /**

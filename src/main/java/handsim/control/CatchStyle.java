@@ -9,14 +9,45 @@ import handsim.config.Json;
  * catch its thrown objects otherwise ({@link ControllerConfig#withCatchAfterThrow}), and a throw
  * planner may choose the catch of each throw with it ({@link ThrowDecision}).
  *
+ * <p>With a {@link Level} search the plane moves, within its reach, to where the long axis of a
+ * tumbling object is predicted to lie level, so that it lands across the palm and not on an end.
+ *
  * @param planeShift metres above the configured interception plane (negative: below)
  * @param velocityFraction palm velocity at interception as a fraction of the object's
+ * @param level when not null, the search for a plane where the long axis lies level
  */
-public record CatchStyle(double planeShift, double velocityFraction) {
+public record CatchStyle(double planeShift, double velocityFraction, Level level) {
+
+    /**
+     * The search for a level catch: the plane is tried from {@code planeShift - below} to {@code
+     * planeShift + above} in steps of {@code step} (m); the shift nearest {@code planeShift} whose
+     * predicted long axis is at most {@code tilt} out of the horizontal is taken, or, when none
+     * is, the one nearest to level.
+     *
+     * @param below how far the plane may move down (m): a later catch, after more turn
+     * @param above how far the plane may move up (m): an earlier catch
+     * @param step spacing of the tried planes (m)
+     * @param tilt a long axis this far out of the horizontal (rad) counts as level
+     */
+    public record Level(double below, double above, double step, double tilt) {
+
+        static Level parse(Json j) {
+            j.allow("comment");
+            Level l = new Level(j.number("below", 0, 0.3), j.number("above", 0, 0.3), j.number("step", 0.001, 0.3), Math.toRadians(j.number("tiltDeg", 0, 90)));
+            j.requireNoUnknownFields();
+            return l;
+        }
+    }
+
+    /** A style with no level search. */
+    public CatchStyle(double planeShift, double velocityFraction) {
+        this(planeShift, velocityFraction, null);
+    }
 
     public static CatchStyle parse(Json j) {
         j.allow("comment");
-        CatchStyle s = new CatchStyle(j.number("planeShift", -0.3, 0.3), j.number("velocityFraction", 0, 1));
+        CatchStyle s = new CatchStyle(j.number("planeShift", -0.3, 0.3), j.number("velocityFraction", 0, 1),
+                j.has("level") ? Level.parse(j.get("level")) : null);
         j.requireNoUnknownFields();
         return s;
     }
