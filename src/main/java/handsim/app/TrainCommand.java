@@ -8,6 +8,7 @@ import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
+import handsim.task.FlipTask;
 import handsim.task.StateVector;
 import handsim.task.Tasks;
 import handsim.task.ThrowTask;
@@ -20,6 +21,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -100,13 +102,18 @@ final class TrainCommand implements Callable<Integer> {
         }
     }
 
-    /** The environments of a run: its task and object with the shipped controller, launch and episode configs. */
+    /**
+     * The environments of a run: its task and object with the shipped controller, launch and
+     * episode configs; a flip run may catch as its config says ({@link TrainConfig.Run#catchAfterThrow}).
+     */
     static ThrowEnvFactory environments(TrainConfig.Run run, HandModel model) {
         Tasks tasks = Wiring.tasks();
         ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
         ControllerConfig cc = Wiring.controllerConfig();
         ObjectSpec object = Wiring.object(run.object());
-        return new ThrowEnvFactory(run.task(), object, () -> tasks.create(run.task(), run.object()), cc,
+        Supplier<ThrowTask> task = run.catchAfterThrow() == null ? () -> tasks.create(run.task(), run.object())
+                : () -> ((FlipTask) tasks.create(run.task(), run.object())).catchingAs(run.catchAfterThrow());
+        return new ThrowEnvFactory(run.task(), object, task, cc,
                 Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
                 new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));

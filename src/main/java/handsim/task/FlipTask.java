@@ -117,6 +117,19 @@ public final class FlipTask implements ThrowTask {
         this.target = neutralPalm.plus(config.targetOffset());
     }
 
+    private FlipTask(Config config, String object, ObjectFlip flip, Vec3 target) {
+        this.config = config;
+        this.object = object;
+        this.flip = flip;
+        this.target = target;
+    }
+
+    /** This task with the catches after the hand's throws meeting the object as {@code style} says, not as its config says. */
+    public FlipTask catchingAs(CatchStyle style) {
+        return new FlipTask(config, object, new ObjectFlip(flip.flipAngle(), flip.nominal(), flip.release(), Optional.of(style)),
+                target);
+    }
+
     /** Whole flips made by a loop's throw (0 for loop 0). */
     public int flips(LoopRecord loop) {
         double rotation = loop.flightRotation();

@@ -2,6 +2,7 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.learn.LearnerConfig;
 import handsim.task.StateVector;
 import java.nio.file.Path;
@@ -31,19 +32,25 @@ public record TrainConfig(Run run, LearnerConfig learner) {
      *     SpinShaping}; {@link SpinShaping#NONE}, the paper's reward, when absent)
      * @param endAtFailedThrow a training episode ends at the first throw that is not a success of
      *     the task, as an evaluation episode does (false when absent: only a drop ends it)
+     * @param catchAfterThrow flip task only: how the catches after the hand's throws meet the
+     *     object while training, instead of as the task says ({@code catch}; null when absent: the
+     *     task's catch)
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
             double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
-            boolean endAtFailedThrow) {
+            boolean endAtFailedThrow, CatchStyle catchAfterThrow) {
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.bool("endAtFailedThrow", false));
+                    j.bool("endAtFailedThrow", false), j.has("catch") ? CatchStyle.parse(j.get("catch")) : null);
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
+            }
+            if (r.catchAfterThrow != null && !r.task.equals("flip")) {
+                throw j.fieldError("catch", "only the flip task's catches can be set here, and the task is \"" + r.task + "\"");
             }
             j.requireNoUnknownFields();
             return r;
@@ -72,6 +79,14 @@ public record TrainConfig(Run run, LearnerConfig learner) {
         }
         if (!run.endAtFailedThrow()) {
             runNode.remove("endAtFailedThrow");
+        }
+        runNode.remove("catchAfterThrow");
+        if (run.catchAfterThrow() != null) {
+            ObjectNode catching = Json.mapper().valueToTree(run.catchAfterThrow());
+            if (run.catchAfterThrow().level() == null) {
+                catching.remove("level");
+            }
+            runNode.set("catch", catching);
         }
         root.set("run", runNode);
         root.setAll(learner.toJson());

@@ -9,16 +9,19 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.ConfigException;
 import handsim.config.Json;
+import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.learn.EpisodeStats;
 import handsim.learn.MetricsCsv;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.sim.ode.OdeSimulator;
+import handsim.task.FlipTask;
 import handsim.task.StateVector;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -187,6 +190,25 @@ class TrainRunTest {
                 Map.of("run.endAtFailedThrow", "true"))));
         assertTrue(ending.run().endAtFailedThrow());
         assertEquals(ending, TrainConfig.parse(Json.of("saved", ending.toJson())), "the run folder's config gives it back");
+    }
+
+    @Test
+    void aFlipRunMayCatchAsItsConfigSaysAndOnlyAFlipRun() {
+        // configs/train/flip.json trains with the controller's own catch (the shipped can policy
+        // was trained so), not the task's level catch; the run folder's copy keeps it
+        Path file = Home.resolve("configs/train/flip.json");
+        TrainConfig flip = TrainConfig.load(file);
+        assertEquals(new CatchStyle(0, 0.7), flip.run().catchAfterThrow());
+        assertEquals(flip, TrainConfig.parse(Json.of("saved", flip.toJson())), "the run folder's config gives it back");
+        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(flip.run().catchAfterThrow());
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        assertEquals(new CatchStyle(0, 0.7), task.controller(base).catchAfterThrow().orElseThrow(), "the task catches as the run says");
+
+        Path height = Home.resolve("configs/train/height.json");
+        ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
+        ((ObjectNode) node.get("run")).set("catch", flip.toJson().get("run").get("catch"));
+        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(Json.of("height", node)));
+        assertTrue(e.getMessage().contains("catch") && e.getMessage().contains("height"), e.getMessage());
     }
 
     @Test
