@@ -3,6 +3,7 @@ package handsim.evaluation;
 import handsim.task.CatchLoopTest;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeLimits;
+import handsim.task.FlipTask;
 import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 
@@ -61,10 +62,14 @@ class ThrowPlannerTest {
         return nominalFlip("can");
     }
 
+    /**
+     * The nominal flip of {@code object}, its flips caught as the controller catches: the seeds
+     * and counts of these tests were measured so, before the can had a level catch.
+     */
     private CatchEvaluation nominalFlip(String object) {
         return CatchEvaluation.nominal(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                TestSupport.tasks().create("flip", object));
+                ((FlipTask) TestSupport.tasks().create("flip", object)).catchingAs(controller.catchStyle()));
     }
 
     /** The nominal flip of {@code object}, its catch as {@code catching} says (null: the controller's own). */
