@@ -1,5 +1,6 @@
 package handsim.control;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 
 /**
@@ -42,6 +43,16 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
     /** A style with no level search. */
     public CatchStyle(double planeShift, double velocityFraction) {
         this(planeShift, velocityFraction, null);
+    }
+
+    /** This style in the file's format ({@code parse} gives it back). */
+    public ObjectNode toJson() {
+        ObjectNode j = Json.mapper().createObjectNode().put("planeShift", planeShift).put("velocityFraction", velocityFraction);
+        if (level != null) {
+            j.putObject("level").put("below", level.below()).put("above", level.above()).put("step", level.step())
+                    .put("tiltDeg", Math.toDegrees(level.tilt()));
+        }
+        return j;
     }
 
     public static CatchStyle parse(Json j) {

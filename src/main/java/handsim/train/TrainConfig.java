@@ -82,11 +82,7 @@ public record TrainConfig(Run run, LearnerConfig learner) {
         }
         runNode.remove("catchAfterThrow");
         if (run.catchAfterThrow() != null) {
-            ObjectNode catching = Json.mapper().valueToTree(run.catchAfterThrow());
-            if (run.catchAfterThrow().level() == null) {
-                catching.remove("level");
-            }
-            runNode.set("catch", catching);
+            runNode.set("catch", run.catchAfterThrow().toJson());
         }
         root.set("run", runNode);
         root.setAll(learner.toJson());

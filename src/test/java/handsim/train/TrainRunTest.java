@@ -204,6 +204,13 @@ class TrainRunTest {
         ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
         assertEquals(new CatchStyle(0, 0.7), task.controller(base).catchAfterThrow().orElseThrow(), "the task catches as the run says");
 
+        TrainConfig level = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), Json.load(file).node(),
+                Map.of("run.catch", "{\"planeShift\": 0, \"velocityFraction\": 0.7, \"level\": {\"below\": 0.15, \"above\": 0, "
+                        + "\"step\": 0.01, \"tiltDeg\": 15}}"))));
+        assertEquals(new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15)), level.run().catchAfterThrow().level(),
+                "--set gives the run the task's level catch (configs/train/README.md)");
+        assertEquals(level, TrainConfig.parse(Json.of("saved", level.toJson())), "and its folder's config keeps it");
+
         Path height = Home.resolve("configs/train/height.json");
         ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
         ((ObjectNode) node.get("run")).set("catch", flip.toJson().get("run").get("catch"));
