@@ -128,12 +128,20 @@ class CatchPlannerTest {
     /**
      * A can dropped from rest at 1.1 m tumbling end over end at 15 rad/s about a principal axis
      * (a steady turn: the long axis turns at 15 rad/s about world z); it crosses the plane 0.72 at
-     * T0 = sqrt(2 0.38 / g) with its axis 60 deg from the vertical, 30 deg out of level.
+     * T0 = sqrt(2 0.38 / g) with its axis 60 deg from the vertical, 30 deg out of level, and met
+     * with a level search {@code below} and {@code above} the plane, in 1 cm steps, 5 deg.
      */
-    private static RigidState tumblingCan() {
-        double t0 = Math.sqrt(2 * (1.1 - PLANE) / 9.81);
+    private CatchPlanner.Plan tumblingCanMet(double below, double above) {
+        double t0 = fallTime(PLANE);
         Quat q0 = Quat.fromAxisAngle(Vec3.Z, Math.toRadians(60) - 15 * t0);
-        return new RigidState(new Vec3(0.05, 1.1, 0.35), q0, Vec3.ZERO, new Vec3(0, 0, 15));
+        RigidState can = new RigidState(new Vec3(0.05, 1.1, 0.35), q0, Vec3.ZERO, new Vec3(0, 0, 15));
+        CatchStyle level = new CatchStyle(0, 0.7, new CatchStyle.Level(below, above, 0.01, Math.toRadians(5)));
+        return planner.plan(can, TestSupport.object("can"), centred, ready, ANYWHERE, level);
+    }
+
+    /** Time for the can dropped from rest at 1.1 m to fall to height {@code y}. */
+    private static double fallTime(double y) {
+        return Math.sqrt(2 * (1.1 - y) / 9.81);
     }
 
     @Test
@@ -141,24 +149,20 @@ class CatchPlannerTest {
         // by construction the axis is 60 + 15 (t - T0) rad-turned from the vertical: on the plane
         // 0.08 m lower it is still 6.0 deg out of level, on the plane 0.09 m lower 3.1 deg, the
         // first within the 5 deg that count as level; closed-form ballistics give that time
-        ObjectSpec can = TestSupport.object("can");
-        CatchStyle level = new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(5)));
-        CatchPlanner.Plan plan = planner.plan(tumblingCan(), can, centred, ready, ANYWHERE, level);
-        assertEquals(Math.sqrt(2 * (1.1 - (PLANE - 0.09)) / 9.81), plan.duration(), TOLERANCE, "met 0.09 m below the plane");
+        CatchPlanner.Plan plan = tumblingCanMet(0.15, 0);
+        assertEquals(fallTime(PLANE - 0.09), plan.duration(), TOLERANCE, "met 0.09 m below the plane");
         assertEquals(PLANE - 0.09, plan.objectPosition().y(), TOLERANCE, "centre on the lowered plane");
-
-        CatchPlanner.Plan plain = planner.plan(tumblingCan(), can, centred, ready, ANYWHERE, new CatchStyle(0, 0.7));
-        assertEquals(Math.sqrt(2 * (1.1 - PLANE) / 9.81), plain.duration(), TOLERANCE, "without the search: on the plane");
+        // the search tries nearest first, either way: with room above as well it still goes down
+        assertEquals(fallTime(PLANE - 0.09), tumblingCanMet(0.15, 0.15).duration(), TOLERANCE, "the same with room above");
     }
 
     @Test
     void aLevelCatchThatCannotReachLevelTakesThePlaneNearestToIt() {
-        // within 0.05 m below (and none above) the axis is never within 5 deg of level; it comes
-        // nearest on the lowest plane tried, as it turns toward level all the way down
-        ObjectSpec can = TestSupport.object("can");
-        CatchStyle level = new CatchStyle(0, 0.7, new CatchStyle.Level(0.05, 0, 0.01, Math.toRadians(5)));
-        CatchPlanner.Plan plan = planner.plan(tumblingCan(), can, centred, ready, ANYWHERE, level);
-        assertEquals(Math.sqrt(2 * (1.1 - (PLANE - 0.05)) / 9.81), plan.duration(), TOLERANCE, "met 0.05 m below the plane");
+        // within 0.05 m below the axis is never within 5 deg of level; it comes nearest on the
+        // lowest plane tried, as it turns toward level all the way down; above the plane it is
+        // further from level, so a search only upward stays on the plane
+        assertEquals(fallTime(PLANE - 0.05), tumblingCanMet(0.05, 0).duration(), TOLERANCE, "met 0.05 m below the plane");
+        assertEquals(fallTime(PLANE), tumblingCanMet(0, 0.15).duration(), TOLERANCE, "met on the plane");
     }
 
     @Test
