@@ -102,9 +102,9 @@ public final class CatchPlanner {
     }
 
     /**
-     * The interception time on the plane nearest {@code shift}, within the search's reach below and above, where
-     * the long axis is predicted ({@link #longAxisAt}) to lie level within its tilt; or, when it
-     * is level on none of them, on the plane where it is nearest to level.
+     * The interception time on the plane nearest {@code shift}, within the search's reach below
+     * and above, where the long axis is predicted ({@link #longAxisAt}) to lie level within its
+     * tilt; or, when it is level on none of them, on the plane where it is nearest to level.
      */
     private double levelInterceptionTime(RigidState object, ObjectSpec spec, double shift, CatchStyle.Level level) {
         int below = (int) Math.floor(level.below() / level.step() + 1e-9);
@@ -112,8 +112,7 @@ public final class CatchPlanner {
         double bestTime = interceptionTime(object, shift);
         double bestTilt = Double.POSITIVE_INFINITY;
         for (int k = 0; k <= 2 * Math.max(below, above); k++) {
-            // shift, +step, -step, +2 step, ... within the reach either way
-            int n = (k % 2 == 1 ? 1 : -1) * ((k + 1) / 2);
+            int n = nearestFirst(k);
             if (n > above || -n > below) {
                 continue;
             }
@@ -130,6 +129,11 @@ public final class CatchPlanner {
         return bestTime;
     }
 
+    /** The k-th step of a search outward from where it starts, nearest first: 0, +1, -1, +2, -2, ... */
+    private static int nearestFirst(int k) {
+        return (k % 2 == 1 ? 1 : -1) * ((k + 1) / 2);
+    }
+
     /**
      * The palm frame that puts the object's centre {@code p} at {@code objectInPalm}, turned
      * about the palm normal as little as possible from {@code preferred} while reachable; the
@@ -141,8 +145,8 @@ public final class CatchPlanner {
         double bestMiss = Double.POSITIVE_INFINITY;
         int steps = (int) Math.floor(search.maxAngle() / search.angleStep() + 1e-9);
         for (int k = 0; k <= 2 * steps; k++) {
-            // 0, +step, -step, +2 step, ... ; each heading also tried half a turn round for long objects
-            double turn = (k % 2 == 1 ? 1 : -1) * ((k + 1) / 2) * search.angleStep();
+            // each heading also tried half a turn round for long objects
+            double turn = nearestFirst(k) * search.angleStep();
             for (double flip : symmetric ? new double[] {0, Math.PI} : new double[] {0}) {
                 Quat r = preferred.mul(Quat.fromAxisAngle(Vec3.Y, turn + flip));
                 Frame palm = new Frame(p.minus(r.rotate(objectInPalm)), r);

@@ -34,7 +34,8 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
 
         static Level parse(Json j) {
             j.allow("comment");
-            Level l = new Level(j.number("below", 0, 0.3), j.number("above", 0, 0.3), j.number("step", 0.001, 0.3), Math.toRadians(j.number("tiltDeg", 0, 90)));
+            Level l = new Level(j.number("below", 0, 0.3), j.number("above", 0, 0.3), j.number("step", 0.001, 0.3),
+                    Math.toRadians(j.number("tiltDeg", 0, 90)));
             j.requireNoUnknownFields();
             return l;
         }

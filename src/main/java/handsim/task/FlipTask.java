@@ -107,14 +107,16 @@ public final class FlipTask implements ThrowTask {
 
     /** The flip task for {@code object}, which the config must list. */
     public FlipTask(Config config, String object, Vec3 neutralPalm) {
-        this.config = config;
-        this.object = object;
-        this.flip = config.objects().get(object);
+        this(config, object, settingsFor(config, object), neutralPalm.plus(config.targetOffset()));
+    }
+
+    private static ObjectFlip settingsFor(Config config, String object) {
+        ObjectFlip flip = config.objects().get(object);
         if (flip == null) {
             throw new IllegalArgumentException("the flip task has no settings for a " + object + " (configs/tasks/flip.json lists "
                     + String.join(", ", config.objects().keySet()) + ")");
         }
-        this.target = neutralPalm.plus(config.targetOffset());
+        return flip;
     }
 
     private FlipTask(Config config, String object, ObjectFlip flip, Vec3 target) {
