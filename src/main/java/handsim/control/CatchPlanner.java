@@ -90,7 +90,8 @@ public final class CatchPlanner {
         Optional<Vec3> axis = longAxisAt(object, spec, t);
         Vec3 back = backOfHand(v, axis, fallingTilt);
         Quat preferred = handRotation(back, axis, readyRotation);
-        Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()), axis.isPresent(), reach);
+        Frame palm = reachableHeading(preferred, p, grasp.objectInPalm(spec.halfThickness()).plus(style.offset()),
+                axis.isPresent(), reach);
         return new Plan(t, palm, v.times(style.velocityFraction()), p, v);
     }
 

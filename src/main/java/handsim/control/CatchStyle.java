@@ -2,6 +2,7 @@ package handsim.control;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.math.Vec3;
 
 /**
  * How a CATCH meets the object (sec. 3.6): where its centre crosses the interception plane raised
@@ -12,12 +13,19 @@ import handsim.config.Json;
  *
  * <p>With a {@link Level} search the plane moves, within its reach, to where the long axis of a
  * tumbling object is predicted to lie level, so that it lands across the palm and not on an end.
+ * An {@code offset} moves where on the hand the object's centre is met, and so how it comes to
+ * rest there.
  *
  * @param planeShift metres above the configured interception plane (negative: below)
  * @param velocityFraction palm velocity at interception as a fraction of the object's
  * @param level when not null, the search for a plane where the long axis lies level
+ * @param offset where the object's centre is met, palm frame (m), relative to the grasp's {@code
+ *     catchOffset}: a small shift changes how the object comes to rest in the hand
  */
-public record CatchStyle(double planeShift, double velocityFraction, Level level) {
+public record CatchStyle(double planeShift, double velocityFraction, Level level, Vec3 offset) {
+
+    /** The largest {@link #offset} a style may ask for (m): the grasp's catchOffset says where the hand meets the object. */
+    public static final double MAX_OFFSET = 0.03;
 
     /**
      * The search for a level catch: the plane is tried from {@code planeShift - below} to {@code
@@ -41,9 +49,14 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
         }
     }
 
-    /** A style with no level search. */
+    /** A style with no level search, meeting the object where the grasp says. */
     public CatchStyle(double planeShift, double velocityFraction) {
         this(planeShift, velocityFraction, null);
+    }
+
+    /** A style meeting the object where the grasp says. */
+    public CatchStyle(double planeShift, double velocityFraction, Level level) {
+        this(planeShift, velocityFraction, level, Vec3.ZERO);
     }
 
     /** This style in the file's format ({@code parse} gives it back). */
@@ -53,13 +66,19 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
             j.putObject("level").put("below", level.below()).put("above", level.above()).put("step", level.step())
                     .put("tiltDeg", Math.toDegrees(level.tilt()));
         }
+        if (offset.norm() > 0) {
+            j.putArray("offset").add(offset.x()).add(offset.y()).add(offset.z());
+        }
         return j;
     }
 
     public static CatchStyle parse(Json j) {
         j.allow("comment");
         CatchStyle s = new CatchStyle(j.number("planeShift", -0.3, 0.3), j.number("velocityFraction", 0, 1),
-                j.has("level") ? Level.parse(j.get("level")) : null);
+                j.has("level") ? Level.parse(j.get("level")) : null, j.has("offset") ? j.vec3("offset") : Vec3.ZERO);
+        if (s.offset.norm() > MAX_OFFSET) {
+            throw j.fieldError("offset", "must be within " + MAX_OFFSET + " m of the grasp's catchOffset, got " + s.offset);
+        }
         j.requireNoUnknownFields();
         return s;
     }

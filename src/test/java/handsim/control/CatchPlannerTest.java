@@ -178,6 +178,24 @@ class CatchPlannerTest {
     }
 
     @Test
+    void aStyleOffsetMovesWhereTheObjectIsMetOnTheHand() {
+        // the style's offset adds to the grasp's, in the palm frame; the interception itself (time,
+        // point, palm rotation) is the grasp's own, so only the palm's position moves
+        ObjectSpec can = TestSupport.object("can");
+        Grasp distal = new Grasp("open", "closed", new Vec3(0.045, 0, 0));
+        RigidState launch = new RigidState(new Vec3(0.05, 1.1, 1.2), Quat.fromAxisAngle(Vec3.Z, 1.2), new Vec3(0, 1.0, -1.5),
+                Vec3.ZERO);
+        CatchPlanner.Plan plain = planner.plan(launch, can, distal, ready, ANYWHERE, new CatchStyle(0, 0.7));
+        CatchPlanner.Plan shifted = planner.plan(launch, can, distal, ready, ANYWHERE,
+                new CatchStyle(0, 0.7, null, new Vec3(0, 0, -0.01)));
+        Vec3 inPalm = shifted.palmTarget().rotation().inverseRotate(shifted.objectPosition().minus(shifted.palmTarget().origin()));
+        assertVec(new Vec3(0.045, -can.halfThickness(), -0.01), inPalm, "object centre 1 cm toward the thumb");
+        assertEquals(plain.duration(), shifted.duration(), 0, "met at the same time");
+        assertVec(plain.objectPosition(), shifted.objectPosition(), "at the same point");
+        assertEquals(0, plain.palmTarget().rotation().angleTo(shifted.palmTarget().rotation()), 1e-12, "with the same palm rotation");
+    }
+
+    @Test
     void unreachableHeadingsTurnThePalmToTheNearestReachableOne() {
         // an arm that can only hold the palm with its z axis within 20 deg of a direction 50 deg
         // round the palm normal from the preferred heading: of the tried turns (0, +-15, +-30,
