@@ -39,14 +39,15 @@ class ThrowTeacherTest {
     }
 
     /**
-     * Seed 103 (ThrowPlannerTest.NOMINAL_FAILS): the nominal flip succeeds at the first throw and
-     * fails at the second. The teacher keeps the first as its own label at the cost of one try; at
+     * Seed 103 (ThrowPlannerTest.NOMINAL_FAILS): the nominal flip, caught as the controller
+     * catches, succeeds at the first throw and fails at the second. The teacher keeps the first as its own label at the cost of one try; at
      * the second it finds another throw, which the live hand then makes with success (the twin
      * is exact); labelling leaves the live episode where it was.
      */
     @Test
     void aSuccessfulThrowIsItsOwnLabelAndAFailedOneGetsTheNearestThatWorks() {
-        FlipTask task = (FlipTask) TestSupport.tasks().create("flip", "can");
+        // caught as the controller catches, as in ThrowPlannerTest, where the seed was measured
+        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(controller.catchStyle());
         ThrowSpace space = task.throwSpace(controller.throwSpace());
         double[] nominal = space.toAction(task.nominalThrow());
         CatchEvaluation evaluation = new CatchEvaluation(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),

@@ -307,13 +307,16 @@ class FlipTaskTest {
     void aCatchAfterEachFlipIsSetPerObjectAndABadOneIsNamed() throws Exception {
         ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
         // the shipped can is caught level (configs/tasks/flip.json), the club as the controller catches
-        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15))),
+        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15)), new Vec3(0, 0, -0.0075)),
                 can.controller(base).catchAfterThrow().orElseThrow());
         ObjectNode root = (ObjectNode) Json.mapper().readTree(Files.readString(Home.resolve("configs/tasks/flip.json")));
         ObjectNode level = ((ObjectNode) root.at("/objects/can/catch/level")).put("step", 0);
         ConfigException badLevel = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badLevel.getMessage().contains("step") && badLevel.getMessage().contains("0"), badLevel.getMessage());
         level.put("step", 0.01);
+        ((ObjectNode) root.at("/objects/can/catch")).putArray("offset").add(0).add(0).add(-0.05);
+        ConfigException badOffset = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(badOffset.getMessage().contains("offset") && badOffset.getMessage().contains("0.05"), badOffset.getMessage());
         ((ObjectNode) root.at("/objects/can")).putObject("catch").put("planeShift", 0.1).put("velocityFraction", 0.45);
         ControllerConfig flipping = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm())
                 .controller(base);
