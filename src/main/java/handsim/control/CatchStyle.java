@@ -3,6 +3,7 @@ package handsim.control;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.math.Vec3;
+import java.util.Objects;
 
 /**
  * How a CATCH meets the object (sec. 3.6): where its centre crosses the interception plane raised
@@ -26,6 +27,10 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
 
     /** The largest {@link #offset} a style may ask for (m): the grasp's catchOffset says where the hand meets the object. */
     public static final double MAX_OFFSET = 0.03;
+
+    public CatchStyle {
+        Objects.requireNonNull(offset, "offset (Vec3.ZERO for the grasp's own)");
+    }
 
     /**
      * The search for a level catch: the plane is tried from {@code planeShift - below} to {@code
