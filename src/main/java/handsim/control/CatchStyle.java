@@ -72,7 +72,7 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
                     .put("tiltDeg", Math.toDegrees(level.tilt()));
         }
         if (offset.norm() > 0) {
-            j.putArray("offset").add(offset.x()).add(offset.y()).add(offset.z());
+            j.set("offset", Json.array(offset.toArray()));
         }
         return j;
     }
@@ -80,7 +80,7 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
     public static CatchStyle parse(Json j) {
         j.allow("comment");
         CatchStyle s = new CatchStyle(j.number("planeShift", -0.3, 0.3), j.number("velocityFraction", 0, 1),
-                j.has("level") ? Level.parse(j.get("level")) : null, j.has("offset") ? j.vec3("offset") : Vec3.ZERO);
+                j.has("level") ? Level.parse(j.get("level")) : null, j.vec3("offset", Vec3.ZERO));
         if (s.offset.norm() > MAX_OFFSET) {
             throw j.fieldError("offset", "must be within " + MAX_OFFSET + " m of the grasp's catchOffset, got " + s.offset);
         }

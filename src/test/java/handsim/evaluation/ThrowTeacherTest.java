@@ -40,9 +40,10 @@ class ThrowTeacherTest {
 
     /**
      * Seed 103 (ThrowPlannerTest.NOMINAL_FAILS): the nominal flip, caught as the controller
-     * catches, succeeds at the first throw and fails at the second. The teacher keeps the first as its own label at the cost of one try; at
-     * the second it finds another throw, which the live hand then makes with success (the twin
-     * is exact); labelling leaves the live episode where it was.
+     * catches, succeeds at the first throw and fails at the second. The teacher keeps the first as
+     * its own label at the cost of one try; at the second it finds another throw, which the live
+     * hand then makes with success (the twin is exact); labelling leaves the live episode where it
+     * was.
      */
     @Test
     void aSuccessfulThrowIsItsOwnLabelAndAFailedOneGetsTheNearestThatWorks() {
