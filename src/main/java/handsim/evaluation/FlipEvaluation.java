@@ -184,6 +184,8 @@ final class FlipEvaluation extends TaskEvaluation {
                 + "%d caught standing, %d did not flip%n", method(), tally.successes(), tally.throwsMade(), 100 * tally.successRate(),
                 tally.failures().get(FlipTask.Failure.ARRIVED_END_FIRST), tally.failures().get(FlipTask.Failure.DROPPED),
                 tally.failures().get(FlipTask.Failure.CAUGHT_STANDING), tally.failures().get(FlipTask.Failure.NO_FLIP));
+        console.println("first throws, from the caught throw-in: " + successes(firstThrows(flipTask, allLoops))
+                + "; later throws, from the hand's own catches: " + successes(laterThrows(flipTask, allLoops)));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -215,20 +217,44 @@ final class FlipEvaluation extends TaskEvaluation {
     /**
      * The throws the episodes made, each counted on its own (the throw-in left out): how many
      * succeeded and why each failed one failed ({@link FlipTask#failure}), in {@code per_throw},
-     * labelled with who chose them ({@code method}).
+     * labelled with who chose them ({@code method}); the same for the first throw of each
+     * episode, made from the caught throw-in ({@code first_throw}), and for the throws made from
+     * the hand's own catches ({@code later_throws}).
      */
     private FlipTask.ThrowTally putPerThrow(ObjectNode out, FlipTask flipTask, List<LoopRecord> loops) {
         FlipTask.ThrowTally tally = flipTask.tally(loops);
         out.put("method", method());
-        ObjectNode perThrow = out.putObject("per_throw");
-        perThrow.put("throws", tally.throwsMade());
-        perThrow.put("successes", tally.successes());
-        putFinite(perThrow, "success_rate", tally.successRate());
-        ObjectNode failures = perThrow.putObject("failures");
+        ObjectNode perThrow = putTally(out.putObject("per_throw"), tally);
+        putTally(perThrow.putObject("first_throw"), firstThrows(flipTask, loops));
+        putTally(perThrow.putObject("later_throws"), laterThrows(flipTask, loops));
+        return tally;
+    }
+
+    /** The first throws of the episodes: each made from the caught throw-in. */
+    private static FlipTask.ThrowTally firstThrows(FlipTask flipTask, List<LoopRecord> loops) {
+        return flipTask.tally(loops.stream().filter(l -> l.index() == 1).toList());
+    }
+
+    /** The throws made from the hand's own catches: all but each episode's first. */
+    private static FlipTask.ThrowTally laterThrows(FlipTask flipTask, List<LoopRecord> loops) {
+        return flipTask.tally(loops.stream().filter(l -> l.index() > 1).toList());
+    }
+
+    /** "s of n succeed (r %)", or "none made". */
+    private static String successes(FlipTask.ThrowTally tally) {
+        return tally.throwsMade() == 0 ? "none made"
+                : String.format(Locale.ROOT, "%d of %d succeed (%.1f %%)", tally.successes(), tally.throwsMade(), 100 * tally.successRate());
+    }
+
+    private static ObjectNode putTally(ObjectNode o, FlipTask.ThrowTally tally) {
+        o.put("throws", tally.throwsMade());
+        o.put("successes", tally.successes());
+        putFinite(o, "success_rate", tally.successRate());
+        ObjectNode failures = o.putObject("failures");
         for (FlipTask.Failure f : FlipTask.Failure.values()) {
             failures.put(f.label(), tally.failures().get(f));
         }
-        return tally;
+        return o;
     }
 
     /** Appends a bin of throws between two angles (rad, written in degrees) to a JSON array; returns it for more fields. */

@@ -149,6 +149,14 @@ class CommandsTest {
         }
         long failed = rows.subList(2, rows.size()).stream().filter(r -> !r.split(",", -1)[failureAt].isEmpty()).count();
         assertEquals(perThrow.get("throws").asInt() - perThrow.get("successes").asInt(), failed, rows.toString());
+        // the first throw of each episode (CSV loop 1, made from the caught throw-in) and the later
+        // ones split the throws and their successes between them
+        int loopAt = header.indexOf("loop");
+        JsonNode first = perThrow.get("first_throw"), later = perThrow.get("later_throws");
+        assertEquals(rows.stream().filter(r -> r.split(",", -1)[loopAt].equals("1")).count(), first.get("throws").asInt(), rows.toString());
+        assertEquals(perThrow.get("throws").asInt(), first.get("throws").asInt() + later.get("throws").asInt());
+        assertEquals(perThrow.get("successes").asInt(), first.get("successes").asInt() + later.get("successes").asInt());
+        assertTrue(text.contains("first throws, from the caught throw-in: "), text);
         assertTrue(text.contains("per throw (paper's method)"), text);
     }
 
