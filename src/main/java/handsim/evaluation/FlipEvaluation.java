@@ -17,6 +17,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Collectors;
+import java.util.stream.IntStream;
 
 /**
  * The flip task's evaluation (paper sec. 4.4): episodes that run until a throw fails to flip or
@@ -127,12 +128,15 @@ final class FlipEvaluation extends TaskEvaluation {
             putPlannerStats(out, planning, runs.stream().map(FlipRun::planner).reduce(ThrowPlanner.Stats.NONE, ThrowPlanner.Stats::plus));
         }
         if (csv != null) {
-            StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,flips,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,apex_m,"
+            StringBuilder rows = new StringBuilder("seed,loop,caught,catch_tilt_deg,catch_heading_deg,flips,flight_rotation_deg,"
+                    + "release_spin_rad_s,arrival_tilt_deg,apex_m,"
                     + "catch_x,catch_y,catch_z,landing_x,landing_y,landing_z,reward,failure\n");
             for (FlipRun r : runs) {
                 for (LoopRecord loop : r.loops()) {
-                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%d,%s,%s,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(), loop.caught(),
-                            csvNumber(Math.toDegrees(loop.catchTilt())), flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
+                    rows.append(String.format(Locale.ROOT, "%d,%d,%s,%s,%s,%d,%s,%s,%s,%s,%s,%s,%s,%s%n", r.seed(), loop.index(),
+                            loop.caught(),
+                            csvNumber(Math.toDegrees(loop.catchTilt())), csvNumber(Math.toDegrees(loop.catchHeading())),
+                            flipTask.flips(loop), csvNumber(Math.toDegrees(loop.flightRotation())),
                             csvNumber(loop.releaseSpin()), csvNumber(Math.toDegrees(loop.arrivalTilt())), csvNumber(loop.apexHeight()),
                             csvPoint(loop.catchPoint()), csvPoint(loop.landing()),
                             loop.index() == 0 ? "" : csvNumber(flipTask.reward(loop)),
@@ -156,6 +160,11 @@ final class FlipEvaluation extends TaskEvaluation {
         }
         List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
         FlipTask.ThrowTally tally = putPerThrow(out, flipTask, allLoops);
+        int[][] byHeading = firstThrowsByRestHeading(flipTask, runs);
+        ArrayNode firstByHeading = out.putArray("first_throws_by_rest_heading");
+        for (int b = 0; b < byHeading.length; b++) {
+            putBin(firstByHeading, b * HEADING_BIN, (b + 1) * HEADING_BIN, byHeading[b][0], byHeading[b][1]);
+        }
         List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.RotationBin b : bins) {
@@ -186,6 +195,10 @@ final class FlipEvaluation extends TaskEvaluation {
                 tally.failures().get(FlipTask.Failure.CAUGHT_STANDING), tally.failures().get(FlipTask.Failure.NO_FLIP));
         console.println("first throws, from the caught throw-in: " + successes(firstThrows(flipTask, allLoops))
                 + "; later throws, from the hand's own catches: " + successes(laterThrows(flipTask, allLoops)));
+        console.println("first throws by the heading the throw-in came to rest at (0 across the palm, 90 along the fingers): "
+                + IntStream.range(0, byHeading.length).mapToObj(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d of %d",
+                        Math.toDegrees(b * HEADING_BIN), Math.toDegrees((b + 1) * HEADING_BIN), byHeading[b][1], byHeading[b][0]))
+                        .collect(Collectors.joining("; ")));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -228,6 +241,28 @@ final class FlipEvaluation extends TaskEvaluation {
         putTally(perThrow.putObject("first_throw"), firstThrows(flipTask, loops));
         putTally(perThrow.putObject("later_throws"), laterThrows(flipTask, loops));
         return tally;
+    }
+
+    /** Width of the bins of {@link #firstThrowsByRestHeading} (rad). */
+    private static final double HEADING_BIN = Math.toRadians(15);
+
+    /**
+     * Each episode's first throw by the heading its caught throw-in came to rest at ({@link
+     * LoopRecord#catchHeading}) in {@link #HEADING_BIN} bins from 0 to 90 degrees: per bin the
+     * throws made and those that succeeded. The arm cannot turn the palm under every heading of
+     * the launched object, and one met askew rests askew.
+     */
+    private static int[][] firstThrowsByRestHeading(FlipTask flipTask, List<FlipRun> runs) {
+        int[][] bins = new int[(int) Math.round(Math.PI / 2 / HEADING_BIN)][2];
+        for (FlipRun r : runs) {
+            if (r.loops().size() < 2 || Double.isNaN(r.loops().get(0).catchHeading())) {
+                continue;
+            }
+            int b = Math.min(bins.length - 1, (int) (r.loops().get(0).catchHeading() / HEADING_BIN));
+            bins[b][0]++;
+            bins[b][1] += flipTask.success(r.loops().get(1)) ? 1 : 0;
+        }
+        return bins;
     }
 
     /** The first throws of the episodes: each made from the caught throw-in. */

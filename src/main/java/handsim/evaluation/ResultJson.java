@@ -39,6 +39,7 @@ public final class ResultJson {
         number(o, "flight_rotation", r.flightRotation());
         number(o, "release_spin", r.releaseSpin());
         number(o, "catch_tilt", r.catchTilt());
+        number(o, "catch_heading", r.catchHeading());
         o.set("catch_point", vec(r.catchPoint()));
         number(o, "arrival_tilt", r.arrivalTilt());
         number(o, "max_penetration", r.maxPenetration());
@@ -53,6 +54,7 @@ public final class ResultJson {
         return new LoopRecord(o.get("index").asInt(), o.get("caught").asBoolean(), number(o, "apex"), vec(o.get("landing")),
                 number(o, "target"), t.isNull() ? null : ThrowParameters.fromArray(numbers(t)), o.get("box_hit").asBoolean(),
                 number(o, "box_distance"), number(o, "flight_rotation"), number(o, "release_spin"), number(o, "catch_tilt"),
+                number(o, "catch_heading"),
                 vec(o.get("catch_point")), number(o, "arrival_tilt"), number(o, "max_penetration"), number(o, "max_limit_excess"),
                 number(o, "peak_torque_ratio"), number(o, "duration"));
     }

@@ -349,6 +349,8 @@ public final class CatchThrowEpisode {
         } else if (longAxis != null) {
             Vec3 axis = obs.object().orientation().rotate(longAxis); // unit: ObjectSpec normalises it
             state.loop.catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
+            Vec3 inPalm = obs.palm().rotation().inverseRotate(axis);
+            state.loop.catchHeading = Math.atan2(Math.abs(inPalm.x()), Math.abs(inPalm.z())); // palm z: across the palm
         }
         return finishLoop(held);
     }
@@ -382,7 +384,7 @@ public final class CatchThrowEpisode {
         LoopRecord r = new LoopRecord(index, caught, index == 0 ? Double.NaN : c.apex, caught ? null : c.landing,
                 c.loopGoal, c.loopThrow, c.boxHit, boxes.isEmpty() ? Double.NaN : c.boxHit ? 0 : c.boxDistance,
                 index == 0 || longAxis == null ? Double.NaN : flight.rotation(),
-                index == 0 ? Double.NaN : flight.releaseSpin(), c.catchTilt, flight.catchPoint(),
+                index == 0 ? Double.NaN : flight.releaseSpin(), c.catchTilt, c.catchHeading, flight.catchPoint(),
                 index == 0 || longAxis == null ? Double.NaN : flight.arrivalTilt(),
                 c.maxDepth, c.maxLimitExcess, c.peakTorqueRatio, sim.time() - c.loopStart);
         state.loops.add(r);

@@ -76,6 +76,8 @@ public final class EpisodeState {
         Vec3 landing;
         /** The judged catch's tilt of the long axis out of the palm plane (see {@link LoopRecord#catchTilt}). */
         double catchTilt = Double.NaN;
+        /** The judged catch's heading of the long axis in the palm (see {@link LoopRecord#catchHeading}). */
+        double catchHeading = Double.NaN;
         ThrowParameters loopThrow;
         double loopGoal = Double.NaN;
 
@@ -90,6 +92,7 @@ public final class EpisodeState {
             c.boxDistance = boxDistance;
             c.landing = landing;
             c.catchTilt = catchTilt;
+            c.catchHeading = catchHeading;
             c.loopThrow = loopThrow;
             c.loopGoal = loopGoal;
             return c;

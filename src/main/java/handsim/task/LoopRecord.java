@@ -26,6 +26,11 @@ import handsim.math.Vec3;
  * @param catchTilt how far the object's long axis stood out of the palm's plane when the catch
  *     was judged at the end of MIDDLE (rad: 0 lying in the palm, pi/2 standing on end; NaN when
  *     dropped and for objects without a long axis)
+ * @param catchHeading how far the long axis, seen along the palm's normal at that moment, turns
+ *     from lying across the palm (the palm's z axis, thumb to little finger) toward its x axis
+ *     (toward the fingers): 0 across the palm, pi/2 along the fingers (rad; NaN as catchTilt). The
+ *     arm cannot turn the palm under every heading of an arriving object (CatchPlanner), so an
+ *     object may come to rest askew
  * @param catchPoint where the object's centre was at the first touch of the catch after the
  *     throw's release (m, world; null for loop 0 and when nothing touched it again)
  * @param arrivalTilt how far the object's long axis stood out of the horizontal at that first
@@ -38,5 +43,6 @@ import handsim.math.Vec3;
  */
 public record LoopRecord(int index, boolean caught, double apexHeight, Vec3 landing, double targetHeight,
         ThrowParameters throwParams, boolean boxHit, double boxDistance, double flightRotation, double releaseSpin, double catchTilt,
+        double catchHeading,
         Vec3 catchPoint, double arrivalTilt, double maxPenetration, double maxLimitExcess, double peakTorqueRatio, double duration) {
 }

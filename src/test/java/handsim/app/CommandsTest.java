@@ -115,6 +115,15 @@ class CommandsTest {
         // the launched can of seed 1 comes to lie in the palm (a trace of 215 catches: 3 in 4 under 30 deg)
         double throwIn = Double.parseDouble(rows.get(1).split(",", -1)[tiltAt]);
         assertTrue(throwIn < 30, "the caught throw-in lies in the palm: " + rows.get(1));
+        // the heading of a caught can's axis in the palm: 0 across the palm, 90 along the fingers
+        int headingAt = header.indexOf("catch_heading_deg");
+        for (String row : rows.subList(1, rows.size())) {
+            String[] f = row.split(",", -1);
+            if (Boolean.parseBoolean(f[caughtAt])) {
+                double heading = Double.parseDouble(f[headingAt]);
+                assertTrue(heading >= 0 && heading <= 90, "a heading in [0, 90] deg: " + row);
+            }
+        }
         // the throws binned by flight rotation account for every throw and every success (all
         // throws after the throw-in have a measured flight: each left the hand), and are drawn next to the JSON
         int binned = 0, binnedSuccesses = 0;
@@ -157,6 +166,14 @@ class CommandsTest {
         assertEquals(perThrow.get("throws").asInt(), first.get("throws").asInt() + later.get("throws").asInt());
         assertEquals(perThrow.get("successes").asInt(), first.get("successes").asInt() + later.get("successes").asInt());
         assertTrue(text.contains("first throws, from the caught throw-in: "), text);
+        // every first throw is binned by the heading its caught throw-in rested at (a can's is always defined)
+        int binnedFirst = 0, binnedFirstSuccesses = 0;
+        for (JsonNode b : summary.get("first_throws_by_rest_heading")) {
+            binnedFirst += b.get("throws").asInt();
+            binnedFirstSuccesses += b.get("successes").asInt();
+        }
+        assertEquals(first.get("throws").asInt(), binnedFirst, summary.toString());
+        assertEquals(first.get("successes").asInt(), binnedFirstSuccesses, summary.toString());
         assertTrue(text.contains("per throw (paper's method)"), text);
     }
 

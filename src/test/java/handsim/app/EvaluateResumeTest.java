@@ -32,7 +32,7 @@ class EvaluateResumeTest {
     void aLoopRecordReadsBackFromJsonBitForBit() {
         LoopRecord r = new LoopRecord(3, false, 1.2345678901234567, new Vec3(0.1, -0.2, 1e-300), Double.NaN,
                 new ThrowParameters(new Vec3(0.01, 0.25, -0.003), new Vec3(0.3, 1 / 3.0, -0.7), 0.11), true, Double.POSITIVE_INFINITY,
-                Math.PI, Double.NaN, 0.5, null, Double.NaN, 2e-3, 0.0, 0.97, 1.4);
+                Math.PI, Double.NaN, 0.5, 0.25, null, Double.NaN, 2e-3, 0.0, 0.97, 1.4);
         assertEquals(r, ResultJson.loop(Json.parse("test", ResultJson.loop(r).toString()).node()));
     }
 

@@ -13,7 +13,8 @@ import org.junit.jupiter.api.Test;
 class HeightErrorsTest {
 
     private static LoopRecord loop(int index, double apex, double target) {
-        return new LoopRecord(index, true, apex, null, target, null, false, Double.NaN, Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+        return new LoopRecord(index, true, apex, null, target, null, false, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test

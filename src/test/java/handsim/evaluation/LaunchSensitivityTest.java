@@ -17,7 +17,7 @@ class LaunchSensitivityTest {
 
     private static LoopRecord loop(int index, double apex, double rotationDeg) {
         return new LoopRecord(index, true, apex, null, Double.NaN, null, false, Double.NaN, Math.toRadians(rotationDeg), Double.NaN,
-                Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
     }
 
     private static final LoopRecord THROW_IN = loop(0, Double.NaN, Double.NaN);

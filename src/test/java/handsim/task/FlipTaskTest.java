@@ -38,7 +38,8 @@ class FlipTaskTest {
 
     private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where, double catchTiltDeg) {
         return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
-                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), caught ? where : null, Double.NaN, 0, 0, 0, 1);
+                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), Double.NaN,
+                caught ? where : null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test
@@ -54,14 +55,14 @@ class FlipTaskTest {
         assertEquals(1, club.flips(flight(320, true, target)));
         assertEquals(2, club.flips(flight(720, true, target)));
         assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1)), "the throw-in is no flip");
+                Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1)), "the throw-in is no flip");
     }
 
     @Test
     void throwsAreBinnedByFlightRotationInQuarterFlips() {
         // can: quarters of its 180 deg flip, 45 deg wide; the throw-in and a throw with no measured flight are left out
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+                Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
         var bins = can.byFlightRotation(List.of(throwIn, flight(10, true, target), flight(200, true, target),
                 flight(210, true, target), flight(220, false, target), flight(Double.NaN, true, target)));
         assertEquals(5, bins.size(), "0-45 up to 180-225, the empty bins between included");
@@ -77,7 +78,8 @@ class FlipTaskTest {
 
     private static LoopRecord arriving(double arrivalDeg, boolean caught, double catchTiltDeg) {
         return new LoopRecord(1, caught, 1.3, caught ? null : Vec3.ZERO, Double.NaN, null, false, Double.NaN, Math.PI,
-                Double.NaN, caught ? Math.toRadians(catchTiltDeg) : Double.NaN, Vec3.ZERO, Math.toRadians(arrivalDeg), 0, 0, 0, 1);
+                Double.NaN, caught ? Math.toRadians(catchTiltDeg) : Double.NaN, Double.NaN,
+                Vec3.ZERO, Math.toRadians(arrivalDeg), 0, 0, 0, 1);
     }
 
     @Test
@@ -85,7 +87,7 @@ class FlipTaskTest {
         // six 15 deg bins from lying (0) to end-first (90), empty ones included; a throw that never came back
         // to the hand (NaN) and the throw-in are left out
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, Math.toRadians(10), 0, 0, 0, 1);
+                Double.NaN, Double.NaN, Double.NaN, null, Math.toRadians(10), 0, 0, 0, 1);
         var bins = can.byArrivalTilt(List.of(throwIn, arriving(5, true, 10), arriving(14, false, 0), arriving(70, true, 80),
                 arriving(89, false, 0), arriving(90, true, 85), arriving(Double.NaN, false, 0)));
         assertEquals(6, bins.size());
@@ -111,7 +113,7 @@ class FlipTaskTest {
         assertEquals(FlipTask.Failure.CAUGHT_STANDING, can.failure(arriving(40, true, 50)).orElseThrow());
         assertEquals(FlipTask.Failure.NO_FLIP, can.failure(flight(90, true, target, 10)).orElseThrow());
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+                Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
         FlipTask.ThrowTally t = can.tally(List.of(throwIn, arriving(10, true, 10), arriving(70, true, 80), arriving(59, false, 0),
                 flight(90, true, target, 10), arriving(5, true, 20)));
         assertEquals(5, t.throwsMade(), "the throw-in is no throw");

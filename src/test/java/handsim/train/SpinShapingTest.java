@@ -19,7 +19,8 @@ import org.junit.jupiter.api.Test;
 class SpinShapingTest {
 
     private static LoopRecord leavingAt(double spin) {
-        return new LoopRecord(1, true, 1.3, null, Double.NaN, null, false, Double.NaN, Math.PI, spin, 0, null, Double.NaN, 0, 0, 0, 1);
+        return new LoopRecord(1, true, 1.3, null, Double.NaN, null, false, Double.NaN, Math.PI, spin, 0, Double.NaN,
+                null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test
