@@ -18,7 +18,21 @@ import java.nio.file.Path;
  */
 public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, double contactStiffness, double friction,
         int maxContactsPerPair, double linearDampingPerSecond, double angularDampingPerSecond, int solverIterations,
-        double sor) {
+        double sor, Divergence divergence) {
+
+    /**
+     * When a step has exploded: the object faster than {@code objectSpeed} (m/s), or an arm body
+     * of at least {@code spinCheckedMass} (kg) turning faster than {@code bodySpin} (rad/s).
+     */
+    public record Divergence(double objectSpeed, double bodySpin, double spinCheckedMass) {
+
+        static Divergence parse(Json j) {
+            j.allow("comment");
+            Divergence d = new Divergence(j.positive("objectSpeed"), j.positive("bodySpin"), j.number("spinCheckedMass", 0, 100));
+            j.requireNoUnknownFields();
+            return d;
+        }
+    }
 
     /*
      * Sanity limits of a world the hand can work in (SI). Outside them a run diverges or means
@@ -59,7 +73,8 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
                 damping.number("linearPerSecond", 0, 100),
                 damping.number("angularPerSecond", 0, 100),
                 solver.integer("iterations", 1, 1000),
-                solver.number("sor", 0.1, 2.0));
+                solver.number("sor", 0.1, 2.0),
+                Divergence.parse(j.get("divergence")));
         for (Json node : new Json[] {contact, damping, solver, j}) {
             node.requireNoUnknownFields();
         }
@@ -92,6 +107,6 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
 
     public SimConfig withSolverIterations(int iterations) {
         return new SimConfig(timeStep, gravity, groundHeight, contactStiffness, friction, maxContactsPerPair,
-                linearDampingPerSecond, angularDampingPerSecond, iterations, sor);
+                linearDampingPerSecond, angularDampingPerSecond, iterations, sor, divergence);
     }
 }

@@ -1,8 +1,14 @@
 package handsim.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.TestSupport;
+import handsim.config.ConfigException;
+import handsim.config.Home;
+import handsim.config.Json;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -30,5 +36,18 @@ class SimConfigTest {
         // kp = ERP / (h CFM), kd = (1 - ERP) / CFM
         assertEquals(kp, c.contactErp(m1, m2) / (h * c.contactCfm(m1, m2)), 1e-6);
         assertEquals(kd, (1 - c.contactErp(m1, m2)) / c.contactCfm(m1, m2), 1e-9);
+    }
+
+    @Test
+    void divergenceLimitsAreReadAndABadOneIsNamed() {
+        // configs/sim.json: the object past 200 m/s, an arm body of 0.1 kg or more past 2,000 rad/s
+        SimConfig.Divergence d = TestSupport.simConfig().divergence();
+        assertEquals(200, d.objectSpeed(), 0);
+        assertEquals(2000, d.bodySpin(), 0);
+        assertEquals(0.1, d.spinCheckedMass(), 0);
+        ObjectNode file = (ObjectNode) Json.load(Home.resolve("configs/sim.json")).node().deepCopy();
+        ((ObjectNode) file.get("divergence")).put("bodySpin", -5);
+        ConfigException e = assertThrows(ConfigException.class, () -> SimConfig.parse(Json.of("sim.json", file)));
+        assertTrue(e.getMessage().contains("divergence.bodySpin") && e.getMessage().contains("-5"), e.getMessage());
     }
 }

@@ -17,6 +17,7 @@ import handsim.sim.WorldSnapshot;
 import handsim.sim.WorldState;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 import org.ode4j.math.DQuaternion;
 import org.ode4j.math.DQuaternionC;
@@ -51,25 +52,6 @@ public final class OdeSimulator implements Simulator {
     private static final com.sun.management.ThreadMXBean THREADS =
             (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
 
-    /** Speed beyond which the state is considered to have exploded, m/s. */
-    private static final double DIVERGED_SPEED = 200;
-
-    /**
-     * Angular speed beyond which the arm is considered to have exploded, rad/s, checked on the
-     * bodies of at least {@link #SPIN_CHECKED_MASS}: the upper arm, the forearm and the palm. In
-     * seeded catch loops of every task they turn at most 146 rad/s (the palm, as a club drops;
-     * upper arm and forearm under 50), and an unpowered arm falling onto its joint limits whips
-     * its palm to about 1,300 rad/s (upper arm and forearm about 300). An arm driven into its
-     * shoulder's Euler singularity spun its upper arm past 2,000 rad/s with nothing touching it,
-     * 70 ms before it flung the can away at 78 m/s (docs/experiments.md, "Catch"). Finger
-     * phalanges (3-30 g) are left out: unpowered, they flop against their limits at over
-     * 1,000 rad/s.
-     */
-    static final double DIVERGED_SPIN = 2000;
-
-    /** Bodies at least this heavy (kg) are checked against {@link #DIVERGED_SPIN}. */
-    static final double SPIN_CHECKED_MASS = 0.1;
-
     private final HandModel model;
     private final SimConfig config;
     private final Kinematics kin;
@@ -77,7 +59,7 @@ public final class OdeSimulator implements Simulator {
     private final DBody[] bodies;
     private final ArmJoints joints;
     private final OdeContacts contacts;
-    /** Bodies checked against {@link #DIVERGED_SPIN}, by index. */
+    /** Bodies checked against the config's divergence spin, by index. */
     private final int[] spinChecked;
     private final List<DGeom> objectGeoms = new ArrayList<>();
     /** The object geoms' bounding spheres: centre relative to the object's centre of mass (3), radius. */
@@ -99,7 +81,7 @@ public final class OdeSimulator implements Simulator {
         w = new OdeWorld(model, config);
         bodies = w.bodies;
         contacts = new OdeContacts(w, config, model.bodyCount());
-        spinChecked = model.bodies().stream().filter(b -> b.mass().mass() >= SPIN_CHECKED_MASS).mapToInt(Body::index).toArray();
+        spinChecked = model.bodies().stream().filter(b -> b.mass().mass() >= config.divergence().spinCheckedMass()).mapToInt(Body::index).toArray();
         joints = new ArmJoints(model, kin);
         reset(joints.q, 0);
     }
@@ -284,23 +266,24 @@ public final class OdeSimulator implements Simulator {
         double[] q = joints.q, qd = joints.qd;
         for (int i = 0; i < q.length; i++) {
             if (!Double.isFinite(q[i]) || !Double.isFinite(qd[i])) {
-                throw new SimulationDiverged("joint " + model.dofs().get(i).name() + " is not finite at t = " + time + " s");
+                throw new SimulationDiverged(String.format(Locale.ROOT, "joint %s is not finite at t = %.4f s",
+                        model.dofs().get(i).name(), time));
             }
         }
         for (int b : spinChecked) {
             double wx = joints.angularVelocity(b, 0), wy = joints.angularVelocity(b, 1), wz = joints.angularVelocity(b, 2);
             double spin2 = wx * wx + wy * wy + wz * wz;
-            if (spin2 > DIVERGED_SPIN * DIVERGED_SPIN) {
-                throw new SimulationDiverged("body " + model.bodies().get(b).name() + " spins at " + Math.sqrt(spin2)
-                        + " rad/s at t = " + time + " s");
+            if (spin2 > config.divergence().bodySpin() * config.divergence().bodySpin()) {
+                throw new SimulationDiverged(String.format(Locale.ROOT, "body %s spins at %.0f rad/s at t = %.4f s",
+                        model.bodies().get(b).name(), Math.sqrt(spin2), time));
             }
         }
         if (object != null) {
             DVector3C v = object.getLinearVel();
             DVector3C p = object.getPosition();
             double speed = Math.sqrt(v.get0() * v.get0() + v.get1() * v.get1() + v.get2() * v.get2());
-            if (!(speed < DIVERGED_SPEED) || !Double.isFinite(p.get0() + p.get1() + p.get2())) {
-                throw new SimulationDiverged("object speed " + speed + " m/s at t = " + time + " s");
+            if (!(speed < config.divergence().objectSpeed()) || !Double.isFinite(p.get0() + p.get1() + p.get2())) {
+                throw new SimulationDiverged(String.format(Locale.ROOT, "object speed %.1f m/s at t = %.4f s", speed, time));
             }
         }
     }
