@@ -11,9 +11,10 @@ import java.util.Optional;
  * @param floor the checkered floor (square of side 2 {@code floorHalfSize}, tiles of {@code floorTile}, m)
  * @param goal the task's goal: the height plane (square of side 2 {@code goalPlaneHalfSize}, m) or the box
  * @param camera a camera node, or empty
+ * @param roughness the surface finish of every material (glTF's metallic-roughness model, in [0, 1])
  */
 public record ExportOptions(boolean floor, boolean goal, Optional<CameraView> camera, Colours colours, double floorHalfSize,
-        double floorTile, double goalPlaneHalfSize) {
+        double floorTile, double goalPlaneHalfSize, double roughness) {
 
     /** The viewer's colours of what the export can hold. */
     public record Colours(float[] skin, float[] palm, float[] object, float[] staticBox, float[] goalPlane, float[] goalBox,

@@ -43,8 +43,6 @@ final class GltfWriter {
     /** glTF's codes: component types, buffer view targets. */
     static final int FLOAT = 5126, UNSIGNED_SHORT = 5123, UNSIGNED_INT = 5125, ARRAY_BUFFER = 34962,
             ELEMENT_ARRAY_BUFFER = 34963;
-    /** Surface finish of every material (the viewer's light has a weak highlight). */
-    static final double ROUGHNESS = 0.6;
     static final String UNLIT = "KHR_materials_unlit";
 
     private final MotionClip clip;
@@ -392,7 +390,7 @@ final class GltfWriter {
     private int material(String name, float[] srgba, boolean unlit) {
         return materialIndex.computeIfAbsent(name, k -> {
             ObjectNode m = materials.addObject().put("name", name);
-            ArrayNode colour = m.putObject("pbrMetallicRoughness").put("metallicFactor", 0.0).put("roughnessFactor", ROUGHNESS)
+            ArrayNode colour = m.putObject("pbrMetallicRoughness").put("metallicFactor", 0.0).put("roughnessFactor", options.roughness())
                     .putArray("baseColorFactor");
             for (int i = 0; i < 3; i++) {
                 colour.add(linear(srgba[i]));

@@ -15,7 +15,7 @@ public final class ExportLook {
         return new ExportOptions(floor, goal, camera.map(ExportLook::view),
                 new ExportOptions.Colours(c.skin(), c.palm(), c.object(), c.staticBox(), c.goalPlane(), c.goalBox(), c.floorLight(),
                         c.floorDark()),
-                config.stage().floorHalfSize(), config.stage().floorTile(), config.goals().planeHalfSize());
+                config.stage().floorHalfSize(), config.stage().floorTile(), config.goals().planeHalfSize(), config.stage().roughness());
     }
 
     /** Where {@code camera} stands and looks now, with its field of view and clipping planes. */

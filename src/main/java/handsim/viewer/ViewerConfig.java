@@ -44,8 +44,8 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benc
     public record Goals(double heightStep, double heightMin, double heightMax, double planeHalfSize) {
     }
 
-    /** The direction light travels (unit), and the checkered floor. */
-    public record Stage(Vec3 light, double floorHalfSize, double floorTile) {
+    /** The direction light travels (unit), the checkered floor, and the surface finish of a glTF export's materials. */
+    public record Stage(Vec3 light, double floorHalfSize, double floorTile, double roughness) {
     }
 
     public record Overlays(double trailSeconds, double trailWidthPixels, double axisLength, double axisWidthPixels) {
@@ -116,7 +116,8 @@ public record ViewerConfig(Window window, CameraHome camera, Pacing pacing, Benc
         if (!(light.y() < -1e-3) || !light.isFinite()) {
             throw st.fieldError("light", "must point downward (y < 0) to cast shadows on the floor, got " + light);
         }
-        Stage stage = new Stage(light.normalized(), st.number("floorHalfSize", 0.1, 100), st.number("floorTile", 0.01, 10));
+        Stage stage = new Stage(light.normalized(), st.number("floorHalfSize", 0.1, 100), st.number("floorTile", 0.01, 10),
+                st.number("roughness", 0, 1));
         Json o = j.get("overlays");
         Overlays overlays = new Overlays(o.number("trailSeconds", 0.05, 60), o.number("trailWidthPixels", 0.5, 20),
                 o.number("axisLength", 1e-3, 1), o.number("axisWidthPixels", 0.5, 20));

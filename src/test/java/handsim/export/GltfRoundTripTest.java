@@ -96,6 +96,22 @@ class GltfRoundTripTest {
         }
     }
 
+    @Test
+    void everyLitMaterialHasTheViewersRoughness() throws Exception {
+        // configs/viewer.json scene.roughness: the surface finish of every material but the unlit goal's
+        GltfReader gltf = GltfReader.read(write("materials.glb"));
+        int lit = 0;
+        for (com.fasterxml.jackson.databind.JsonNode m : gltf.json.get("materials")) {
+            if (!m.has("extensions")) {
+                assertEquals(TestSupport.viewerConfig().stage().roughness(), m.get("pbrMetallicRoughness").get("roughnessFactor").asDouble(),
+                        0, m.toString());
+                lit++;
+            }
+        }
+        assertTrue(lit >= 3, "skin, palm and object at least: " + gltf.json.get("materials"));
+        assertEquals(0.6, TestSupport.viewerConfig().stage().roughness(), 0, "the shipped finish");
+    }
+
     private static Path write(String name) throws Exception {
         Path file = dir.resolve(name);
         ExportTarget.of(file, null, "--out", "--format").write(run.clip,
