@@ -126,7 +126,7 @@ final class FlipDemo {
         summary.put("episodes", episodes);
         summary.put("wall_s", wall);
         StringBuilder csv = new StringBuilder("throw,episode_seed,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,catch_tilt_deg,"
-                + "success,failure\n");
+                + "catch_heading_deg,success,failure\n");
         int n = made.size();
         double[] index = new double[n], turn = new double[n];
         List<Double> okIndex = new ArrayList<>(), okTurn = new ArrayList<>();
@@ -139,8 +139,9 @@ final class FlipDemo {
                 okIndex.add(index[i]);
                 okTurn.add(turn[i]);
             }
-            csv.append(String.format(Locale.ROOT, "%d,%d,%.1f,%.2f,%.1f,%.1f,%s,%s%n", i + 1, seeds.get(i), turn[i], r.releaseSpin(),
-                    Math.toDegrees(r.arrivalTilt()), Math.toDegrees(r.catchTilt()), ok, task.failure(r).map(FlipTask.Failure::label).orElse("")));
+            csv.append(String.format(Locale.ROOT, "%d,%d,%.1f,%.2f,%.1f,%.1f,%.1f,%s,%s%n", i + 1, seeds.get(i), turn[i], r.releaseSpin(),
+                    Math.toDegrees(r.arrivalTilt()), Math.toDegrees(r.catchTilt()), Math.toDegrees(r.catchHeading()), ok,
+                    task.failure(r).map(FlipTask.Failure::label).orElse("")));
         }
         Outputs.writeJson(dir.resolve("summary.json"), summary);
         Outputs.writeString(dir.resolve("loops.csv"), csv.toString());

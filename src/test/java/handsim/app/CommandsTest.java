@@ -53,6 +53,9 @@ class CommandsTest {
         assertEquals(2, summary.get("successes").asInt() + failed, "each throw a success or a failure for one reason");
         java.util.List<String> rows = Files.readAllLines(dir.resolve("loops.csv"));
         assertEquals(3, rows.size(), "a header and one row per throw");
+        java.util.List<String> columns = java.util.Arrays.asList(rows.get(0).split(","));
+        assertEquals(columns.size(), rows.get(1).split(",", -1).length, "a value per column: " + rows);
+        assertTrue(columns.contains("catch_heading_deg"), rows.get(0));
         assertDrawn(dir.resolve("rotation.png"));
         assertEquals(2, Main.run("demo", "--headless", "--object", "club", "--heights", "1:1.2", "--out", dir.resolve("x").toString()),
                 "a flipped object has no height goals");
