@@ -17,7 +17,6 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Collectors;
-import java.util.stream.IntStream;
 
 /**
  * The flip task's evaluation (paper sec. 4.4): episodes that run until a throw fails to flip or
@@ -159,15 +158,19 @@ final class FlipEvaluation extends TaskEvaluation {
             endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
         }
         List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
-        FlipTask.ThrowTally tally = putPerThrow(out, flipTask, allLoops);
-        int[][] byHeading = firstThrowsByRestHeading(flipTask, runs);
+        FlipTask.ThrowTally tally = flipTask.tally(allLoops);
+        // each episode's first throw, made from the caught throw-in, and those made from the hand's own catches
+        FlipTask.ThrowTally first = flipTask.tally(allLoops.stream().filter(l -> l.index() == 1).toList());
+        FlipTask.ThrowTally later = flipTask.tally(allLoops.stream().filter(l -> l.index() > 1).toList());
+        putPerThrow(out, tally, first, later);
+        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(runs.stream().map(FlipRun::loops).toList());
         ArrayNode firstByHeading = out.putArray("first_throws_by_rest_heading");
-        for (int b = 0; b < byHeading.length; b++) {
-            putBin(firstByHeading, b * HEADING_BIN, (b + 1) * HEADING_BIN, byHeading[b][0], byHeading[b][1]);
+        for (FlipTask.AngleBin b : byHeading) {
+            putBin(firstByHeading, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.RotationBin> bins = flipTask.byFlightRotation(allLoops);
+        List<FlipTask.AngleBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
-        for (FlipTask.RotationBin b : bins) {
+        for (FlipTask.AngleBin b : bins) {
             putBin(byRotation, b.from(), b.to(), b.throwsMade(), b.successes());
         }
         List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(allLoops);
@@ -193,12 +196,11 @@ final class FlipEvaluation extends TaskEvaluation {
                 + "%d caught standing, %d did not flip%n", method(), tally.successes(), tally.throwsMade(), 100 * tally.successRate(),
                 tally.failures().get(FlipTask.Failure.ARRIVED_END_FIRST), tally.failures().get(FlipTask.Failure.DROPPED),
                 tally.failures().get(FlipTask.Failure.CAUGHT_STANDING), tally.failures().get(FlipTask.Failure.NO_FLIP));
-        console.println("first throws, from the caught throw-in: " + successes(firstThrows(flipTask, allLoops))
-                + "; later throws, from the hand's own catches: " + successes(laterThrows(flipTask, allLoops)));
+        console.println("first throws, from the caught throw-in: " + successes(first)
+                + "; later throws, from the hand's own catches: " + successes(later));
         console.println("first throws by the heading the throw-in came to rest at (0 across the palm, 90 along the fingers): "
-                + IntStream.range(0, byHeading.length).mapToObj(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d of %d",
-                        Math.toDegrees(b * HEADING_BIN), Math.toDegrees((b + 1) * HEADING_BIN), byHeading[b][1], byHeading[b][0]))
-                        .collect(Collectors.joining("; ")));
+                + byHeading.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d of %d", Math.toDegrees(b.from()),
+                        Math.toDegrees(b.to()), b.successes(), b.throwsMade())).collect(Collectors.joining("; ")));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -234,45 +236,11 @@ final class FlipEvaluation extends TaskEvaluation {
      * episode, made from the caught throw-in ({@code first_throw}), and for the throws made from
      * the hand's own catches ({@code later_throws}).
      */
-    private FlipTask.ThrowTally putPerThrow(ObjectNode out, FlipTask flipTask, List<LoopRecord> loops) {
-        FlipTask.ThrowTally tally = flipTask.tally(loops);
+    private void putPerThrow(ObjectNode out, FlipTask.ThrowTally all, FlipTask.ThrowTally first, FlipTask.ThrowTally later) {
         out.put("method", method());
-        ObjectNode perThrow = putTally(out.putObject("per_throw"), tally);
-        putTally(perThrow.putObject("first_throw"), firstThrows(flipTask, loops));
-        putTally(perThrow.putObject("later_throws"), laterThrows(flipTask, loops));
-        return tally;
-    }
-
-    /** Width of the bins of {@link #firstThrowsByRestHeading} (rad). */
-    private static final double HEADING_BIN = Math.toRadians(15);
-
-    /**
-     * Each episode's first throw by the heading its caught throw-in came to rest at ({@link
-     * LoopRecord#catchHeading}) in {@link #HEADING_BIN} bins from 0 to 90 degrees: per bin the
-     * throws made and those that succeeded. The arm cannot turn the palm under every heading of
-     * the launched object, and one met askew rests askew.
-     */
-    private static int[][] firstThrowsByRestHeading(FlipTask flipTask, List<FlipRun> runs) {
-        int[][] bins = new int[(int) Math.round(Math.PI / 2 / HEADING_BIN)][2];
-        for (FlipRun r : runs) {
-            if (r.loops().size() < 2 || Double.isNaN(r.loops().get(0).catchHeading())) {
-                continue;
-            }
-            int b = Math.min(bins.length - 1, (int) (r.loops().get(0).catchHeading() / HEADING_BIN));
-            bins[b][0]++;
-            bins[b][1] += flipTask.success(r.loops().get(1)) ? 1 : 0;
-        }
-        return bins;
-    }
-
-    /** The first throws of the episodes: each made from the caught throw-in. */
-    private static FlipTask.ThrowTally firstThrows(FlipTask flipTask, List<LoopRecord> loops) {
-        return flipTask.tally(loops.stream().filter(l -> l.index() == 1).toList());
-    }
-
-    /** The throws made from the hand's own catches: all but each episode's first. */
-    private static FlipTask.ThrowTally laterThrows(FlipTask flipTask, List<LoopRecord> loops) {
-        return flipTask.tally(loops.stream().filter(l -> l.index() > 1).toList());
+        ObjectNode perThrow = putTally(out.putObject("per_throw"), all);
+        putTally(perThrow.putObject("first_throw"), first);
+        putTally(perThrow.putObject("later_throws"), later);
     }
 
     /** "s of n succeed (r %)", or "none made". */
@@ -308,10 +276,10 @@ final class FlipEvaluation extends TaskEvaluation {
     }
 
     /** Throws per bin of flight rotation (grey) with the successes among them (blue) drawn over them. */
-    private void plotByRotation(List<FlipTask.RotationBin> bins, Path png) throws IOException {
+    private void plotByRotation(List<FlipTask.AngleBin> bins, Path png) throws IOException {
         double[] x = new double[bins.size()], made = new double[bins.size()], succeeded = new double[bins.size()];
         for (int i = 0; i < x.length; i++) {
-            FlipTask.RotationBin b = bins.get(i);
+            FlipTask.AngleBin b = bins.get(i);
             x[i] = Math.toDegrees(b.from() + b.to()) / 2;
             made[i] = b.throwsMade();
             succeeded[i] = b.successes();

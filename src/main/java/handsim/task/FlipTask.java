@@ -206,10 +206,10 @@ public final class FlipTask implements ThrowTask {
     }
 
     /**
-     * Throws whose object turned between {@code from} and {@code to} in flight (rad), and how
-     * many of them were successes of the task.
+     * Throws whose angle (rad: the turn in flight, or the heading the object rested at before the
+     * throw) lay between {@code from} and {@code to}, and how many of them were successes of the task.
      */
-    public record RotationBin(double from, double to, int throwsMade, int successes) {
+    public record AngleBin(double from, double to, int throwsMade, int successes) {
     }
 
     /**
@@ -218,7 +218,7 @@ public final class FlipTask implements ThrowTask {
      * largest, empty bins included: where a policy's throws fall against the window of rotations
      * that flip and come down lying in the hand.
      */
-    public List<RotationBin> byFlightRotation(List<LoopRecord> loops) {
+    public List<AngleBin> byFlightRotation(List<LoopRecord> loops) {
         double width = flip.flipAngle() / 4;
         List<LoopRecord> thrown = loops.stream().filter(l -> l.index() > 0 && Double.isFinite(l.flightRotation())).toList();
         int[] binOf = thrown.stream().mapToInt(l -> (int) (Math.max(0, l.flightRotation()) / width)).toArray();
@@ -228,9 +228,9 @@ public final class FlipTask implements ThrowTask {
             made[binOf[i]]++;
             succeeded[binOf[i]] += success(thrown.get(i)) ? 1 : 0;
         }
-        List<RotationBin> out = new ArrayList<>();
+        List<AngleBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {
-            out.add(new RotationBin(b * width, (b + 1) * width, made[b], succeeded[b]));
+            out.add(new AngleBin(b * width, (b + 1) * width, made[b], succeeded[b]));
         }
         return out;
     }
@@ -245,8 +245,8 @@ public final class FlipTask implements ThrowTask {
     public record ArrivalBin(double from, double to, int throwsMade, int successes, int drops, int standing) {
     }
 
-    /** Width of the arrival-tilt bins: six bins from lying (0) to end-first (90 deg). */
-    public static final double ARRIVAL_BIN = Math.toRadians(15);
+    /** Width of the arrival-tilt and rest-heading bins: six bins from 0 to 90 deg. */
+    public static final double ANGLE_BIN = Math.toRadians(15);
 
     /**
      * The throws of {@code loops} that came back to the hand (loop 0 and throws without a first
@@ -254,13 +254,13 @@ public final class FlipTask implements ThrowTask {
      * policy's failures are cans that arrive end-first (a wrong turn) or lying ones the catch lost.
      */
     public List<ArrivalBin> byArrivalTilt(List<LoopRecord> loops) {
-        int bins = (int) Math.round(Math.PI / 2 / ARRIVAL_BIN);
+        int bins = (int) Math.round(Math.PI / 2 / ANGLE_BIN);
         int[] made = new int[bins], succeeded = new int[bins], dropped = new int[bins], standing = new int[bins];
         for (LoopRecord l : loops) {
             if (l.index() == 0 || !Double.isFinite(l.arrivalTilt())) {
                 continue;
             }
-            int b = Math.min(bins - 1, (int) (l.arrivalTilt() / ARRIVAL_BIN));
+            int b = Math.min(bins - 1, (int) (l.arrivalTilt() / ANGLE_BIN));
             made[b]++;
             succeeded[b] += success(l) ? 1 : 0;
             dropped[b] += l.caught() ? 0 : 1;
@@ -268,7 +268,32 @@ public final class FlipTask implements ThrowTask {
         }
         List<ArrivalBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {
-            out.add(new ArrivalBin(b * ARRIVAL_BIN, (b + 1) * ARRIVAL_BIN, made[b], succeeded[b], dropped[b], standing[b]));
+            out.add(new ArrivalBin(b * ANGLE_BIN, (b + 1) * ANGLE_BIN, made[b], succeeded[b], dropped[b], standing[b]));
+        }
+        return out;
+    }
+
+    /**
+     * Each episode's first throw (its loop 1) by the heading its caught throw-in came to rest at
+     * ({@link LoopRecord#catchHeading}), all six bins from 0 to 90 deg: the arm cannot turn the
+     * palm under every heading of the launched object, and one met askew rests askew.
+     *
+     * @param episodes each episode's loops, the throw-in first
+     */
+    public List<AngleBin> firstThrowsByRestHeading(List<List<LoopRecord>> episodes) {
+        int bins = (int) Math.round(Math.PI / 2 / ANGLE_BIN);
+        int[] made = new int[bins], succeeded = new int[bins];
+        for (List<LoopRecord> loops : episodes) {
+            if (loops.size() < 2 || !Double.isFinite(loops.get(0).catchHeading())) {
+                continue;
+            }
+            int b = Math.min(bins - 1, (int) (loops.get(0).catchHeading() / ANGLE_BIN));
+            made[b]++;
+            succeeded[b] += success(loops.get(1)) ? 1 : 0;
+        }
+        List<AngleBin> out = new ArrayList<>();
+        for (int b = 0; b < bins; b++) {
+            out.add(new AngleBin(b * ANGLE_BIN, (b + 1) * ANGLE_BIN, made[b], succeeded[b]));
         }
         return out;
     }

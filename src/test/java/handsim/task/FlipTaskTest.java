@@ -1,5 +1,6 @@
 package handsim.task;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -121,6 +122,32 @@ class FlipTaskTest {
         assertEquals(0.4, t.successRate(), 1e-12);
         assertEquals(java.util.Map.of(FlipTask.Failure.ARRIVED_END_FIRST, 1, FlipTask.Failure.DROPPED, 1,
                 FlipTask.Failure.CAUGHT_STANDING, 0, FlipTask.Failure.NO_FLIP, 1), t.failures());
+    }
+
+    @Test
+    void firstThrowsAreBinnedByTheHeadingTheThrowInRestedAt() {
+        // six 15-degree bins from 0 (across the palm) to 90 (along the fingers); 90 itself falls in the last
+        List<FlipTask.AngleBin> bins = can.firstThrowsByRestHeading(List.of(
+                List.of(restingAt(5), flight(180, true, target)),
+                List.of(restingAt(10), flight(90, true, target), flight(180, true, target)),
+                List.of(restingAt(50), flight(180, true, target)),
+                List.of(restingAt(90), flight(180, false, target)),
+                List.of(restingAt(Double.NaN)),
+                List.of(restingAt(20))));
+        assertEquals(6, bins.size());
+        assertEquals(Math.toRadians(45), bins.get(3).from(), 1e-12);
+        assertEquals(Math.toRadians(60), bins.get(3).to(), 1e-12);
+        int[] made = bins.stream().mapToInt(FlipTask.AngleBin::throwsMade).toArray();
+        int[] succeeded = bins.stream().mapToInt(FlipTask.AngleBin::successes).toArray();
+        // only loop 1 counts (episode 2's second throw is left out); a dropped throw-in or one not thrown from is no first throw
+        assertArrayEquals(new int[] {2, 0, 0, 1, 0, 1}, made);
+        assertArrayEquals(new int[] {1, 0, 0, 1, 0, 0}, succeeded);
+    }
+
+    /** A caught throw-in resting at {@code headingDeg} in the palm (NaN: dropped). */
+    private static LoopRecord restingAt(double headingDeg) {
+        return new LoopRecord(0, !Double.isNaN(headingDeg), Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
+                Double.NaN, 10, Math.toRadians(headingDeg), null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test
