@@ -61,6 +61,8 @@ public final class OdeSimulator implements Simulator {
     private final OdeContacts contacts;
     /** Bodies checked against the config's divergence spin, by index. */
     private final int[] spinChecked;
+    /** The square of that spin (rad^2/s^2), compared with each checked body's every step. */
+    private final double divergedSpin2;
     private final List<DGeom> objectGeoms = new ArrayList<>();
     /** The object geoms' bounding spheres: centre relative to the object's centre of mass (3), radius. */
     private final List<double[]> objectBounds = new ArrayList<>();
@@ -81,7 +83,9 @@ public final class OdeSimulator implements Simulator {
         w = new OdeWorld(model, config);
         bodies = w.bodies;
         contacts = new OdeContacts(w, config, model.bodyCount());
-        spinChecked = model.bodies().stream().filter(b -> b.mass().mass() >= config.divergence().spinCheckedMass()).mapToInt(Body::index).toArray();
+        spinChecked = model.bodies().stream().filter(b -> b.mass().mass() >= config.divergence().spinCheckedMass())
+                .mapToInt(Body::index).toArray();
+        divergedSpin2 = config.divergence().bodySpin() * config.divergence().bodySpin();
         joints = new ArmJoints(model, kin);
         reset(joints.q, 0);
     }
@@ -273,7 +277,7 @@ public final class OdeSimulator implements Simulator {
         for (int b : spinChecked) {
             double wx = joints.angularVelocity(b, 0), wy = joints.angularVelocity(b, 1), wz = joints.angularVelocity(b, 2);
             double spin2 = wx * wx + wy * wy + wz * wz;
-            if (spin2 > config.divergence().bodySpin() * config.divergence().bodySpin()) {
+            if (spin2 > divergedSpin2) {
                 throw new SimulationDiverged(String.format(Locale.ROOT, "body %s spins at %.0f rad/s at t = %.4f s",
                         model.bodies().get(b).name(), Math.sqrt(spin2), time));
             }
