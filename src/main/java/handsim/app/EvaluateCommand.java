@@ -55,6 +55,12 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     EpisodeOptions episodeOptions;
 
+    @Option(names = "--opening-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for each episode's first throw, made from the object caught out "
+                    + "of the launch (default: with the shipped policy, models/policies/flip-<object>-opening.json when it "
+                    + "exists; with --policy, that policy makes every throw)")
+    Path openingPolicy;
+
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch "
             + "(default: configs/tasks/height.json evaluationThrows); flip: the most flip-and-catch loops an episode runs to "
             + "(default: configs/tasks/flip.json evaluationLoops); --copies: throws per copy (default: configs/evaluation.json "
@@ -147,6 +153,8 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("planned", who.plan);
         if (who.policy != null || controller.equals("learned")) {
             out.put("policy", who.policyFile(object).toString());
+            Path opening = openingFile();
+            out.put("opening_policy", opening != null ? opening.toString() : null);
         }
         out.put("object", object);
         out.put("seed", episodeOptions.seed);
@@ -188,11 +196,13 @@ final class EvaluateCommand implements Callable<Integer> {
                 .put("seed", episodeOptions.seed);
         Path policy = controller.equals("learned") ? who.policyFile(object) : null;
         s.put("policy", policy != null ? policy.toAbsolutePath().normalize().toString() : null);
+        Path opening = controller.equals("learned") ? openingFile() : null;
+        s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
         s.put("throw_height", throwHeight);
         s.put("copies", copies);
         s.put("nudge", copies != null ? nudge : null);
         ObjectNode files = s.putObject("files");
-        EpisodeJournal.inputHashes(Arrays.asList(policy, goals)).forEach(files::put);
+        EpisodeJournal.inputHashes(Arrays.asList(policy, opening, goals)).forEach(files::put);
         return s;
     }
 
@@ -220,6 +230,9 @@ final class EvaluateCommand implements Callable<Integer> {
         if (copies != null && csv != null) {
             throw new IllegalArgumentException("--csv goes without --copies (a sensitivity run writes its figures with --json)");
         }
+        if (openingPolicy != null && (!task.equals("flip") || !controller.equals("learned"))) {
+            throw new IllegalArgumentException("--opening-policy goes with the flip task and --controller learned");
+        }
         if (who.plan && (!task.equals("flip") || copies != null)) {
             throw new IllegalArgumentException("--plan goes with the flip task and without --copies");
         }
@@ -246,7 +259,19 @@ final class EvaluateCommand implements Callable<Integer> {
         new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
     }
 
-    /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy. */
+    /**
+     * The learned controller's policy for each episode's first throw: --opening-policy; else, with
+     * the shipped policy, the opening one shipped beside it if there is one; else null (one policy
+     * makes every throw).
+     */
+    private Path openingFile() {
+        if (openingPolicy != null || who.policy != null || !controller.equals("learned")) {
+            return openingPolicy;
+        }
+        return ThrowPolicyFile.shippedOpening(task, object);
+    }
+
+    /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
             return t -> obs -> t.nominalThrow();
@@ -257,10 +282,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     : "no shipped policy for the " + task + " task with a " + object + " (" + Home.root().relativize(file)
                             + "): train one (scripts/handsim train) and give it with --policy");
         }
-        ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
+        Path opening = openingFile();
+        if (opening != null && !Files.isRegularFile(opening)) {
+            throw new IllegalArgumentException("--opening-policy: no file " + opening);
+        }
         ObjectSpec spec = Wiring.object(object);
         StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
-        loaded.forTask(Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
-        return t -> loaded.forTask(t, spec, hand);
+        ThrowPolicyFile.throwPolicy(file, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        return t -> ThrowPolicyFile.throwPolicy(file, opening, t, spec, hand);
     }
 }

@@ -151,8 +151,10 @@ final class ShippedScenes implements SceneCatalog {
      */
     private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
         Path file = policy;
+        Path opening = null;
         if (file == null || !matches(file, setup)) {
             file = ThrowPolicyFile.shipped(setup.task(), setup.object());
+            opening = ThrowPolicyFile.shippedOpening(setup.task(), setup.object());
             if (!Files.isRegularFile(file)) {
                 throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
                         + " (none shipped; give --policy FILE)");
@@ -162,7 +164,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.load(file).forTask(task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
+            return ThrowPolicyFile.throwPolicy(file, opening, task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

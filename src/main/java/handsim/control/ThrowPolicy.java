@@ -8,4 +8,31 @@ package handsim.control;
 public interface ThrowPolicy {
 
     ThrowParameters decide(Observation observation);
+
+    /**
+     * The episode's throw number {@code throwIndex} (1: the first, made from the object caught out
+     * of the launch; 2: the one after the hand's own first catch, ...). The same as {@link
+     * #decide(Observation)} unless the policy has an {@link #withOpening opening}.
+     */
+    default ThrowParameters decide(Observation observation, int throwIndex) {
+        return decide(observation);
+    }
+
+    /**
+     * {@code opening} for each episode's first throw and {@code rest} for every later one: the
+     * thrown-in object rests in the hand otherwise than one the hand caught from its own throw.
+     */
+    static ThrowPolicy withOpening(ThrowPolicy opening, ThrowPolicy rest) {
+        return new ThrowPolicy() {
+            @Override
+            public ThrowParameters decide(Observation observation) {
+                return rest.decide(observation);
+            }
+
+            @Override
+            public ThrowParameters decide(Observation observation, int throwIndex) {
+                return (throwIndex == 1 ? opening : rest).decide(observation);
+            }
+        };
+    }
 }

@@ -190,7 +190,7 @@ public final class CatchEvaluation {
     private void decide(CatchThrowEpisode episode, long seed) {
         Observation at = episode.decision();
         if (planner == null) {
-            episode.decide(ThrowDecision.of(throwPolicy.decide(at)));
+            episode.decide(ThrowDecision.of(throwPolicy.decide(at, episode.loops().size())));
             return;
         }
         plannedLoop = episode.loops().size();

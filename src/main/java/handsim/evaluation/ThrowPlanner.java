@@ -160,7 +160,7 @@ public final class ThrowPlanner {
     public ThrowDecision choose(CatchThrowEpisode live, ThrowPolicy policy, long seed) {
         CatchThrowEpisode.Checkpoint now = live.checkpoint();
         SplittableRandom rng = new SplittableRandom(seed);
-        ThrowParameters proposal = policy.decide(live.decision());
+        ThrowParameters proposal = policy.decide(live.decision(), live.loops().size());
         double[] centre = space.toAction(proposal);
         Trial best = null;
         if (promised != null && promised.state().sameValues(live.decision())) {

@@ -5,12 +5,14 @@ import handsim.report.Outputs;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
 import handsim.sim.ObjectSpec;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
@@ -36,6 +38,33 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
     /** Where handsim ships the policy of {@code task} with {@code object}: {@code models/policies/<task>-<object>.json}. */
     public static Path shipped(String task, String object) {
         return Home.resolve("models/policies/" + task + "-" + object + ".json");
+    }
+
+    /**
+     * Where handsim ships the opening policy of {@code task} with {@code object}, the one that makes
+     * each episode's first throw (from the object caught out of the launch) when it exists: {@code
+     * models/policies/<task>-<object>-opening.json}; null when none ships.
+     */
+    public static Path shippedOpening(String task, String object) {
+        Path file = Home.resolve("models/policies/" + task + "-" + object + "-opening.json");
+        return Files.isRegularFile(file) ? file : null;
+    }
+
+    /**
+     * The controller's throw policy for {@code task}: the policy of {@code file}, and when {@code
+     * opening} is not null, that file's policy for each episode's first throw
+     * ({@link ThrowPolicy#withOpening}). Fails as {@link #forTask} does for either file.
+     */
+    public static ThrowPolicy throwPolicy(Path file, Path opening, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
+        ThrowPolicy rest = load(file).forTask(task, object, hand);
+        if (opening == null) {
+            return rest;
+        }
+        try {
+            return ThrowPolicy.withOpening(load(opening).forTask(task, object, hand), rest);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the opening policy " + opening + ": " + e.getMessage(), e);
+        }
     }
 
     public static ThrowPolicyFile load(Path file) {

@@ -38,10 +38,36 @@ class CommandsTest {
         assertEquals(2, Files.readAllLines(dir.resolve("loops.csv")).size(), "a header and one row per throw");
     }
 
+    /** --opening-policy is refused, naming why, where it cannot apply and when its file is missing; nothing runs. */
+    @Test
+    void anOpeningPolicyGoesWithTheLearnedFlipAndAFileThatExists(@TempDir Path dir) {
+        String policy = "models/policies/flip-can.json";
+        ExportCommandTest.Result nominal = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--episodes", "1",
+                "--opening-policy", policy);
+        assertEquals(2, nominal.code());
+        assertTrue(nominal.err().contains("--opening-policy goes with the flip task and --controller learned"), nominal.err());
+        ExportCommandTest.Result height = ExportCommandTest.run("evaluate", "--task", "height", "--controller", "learned",
+                "--episodes", "1", "--opening-policy", policy);
+        assertEquals(2, height.code());
+        assertTrue(height.err().contains("--opening-policy goes with the flip task"), height.err());
+        Path missing = dir.resolve("none.json");
+        ExportCommandTest.Result absent = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
+                "learned", "--episodes", "1", "--opening-policy", missing.toString(), "--json", dir.resolve("out.json").toString());
+        assertEquals(2, absent.code());
+        assertTrue(absent.err().contains("--opening-policy: no file " + missing), absent.err());
+        assertTrue(!Files.exists(dir.resolve("out.json")), "nothing written");
+        ExportCommandTest.Result other = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
+                "learned", "--episodes", "1", "--opening-policy", "models/policies/height-sphere.json");
+        assertEquals(2, other.code());
+        assertTrue(other.err().contains("the opening policy models/policies/height-sphere.json: this policy was trained for the height task"),
+                other.err());
+    }
+
     @Test
     void demoHeadlessFlipsACanWithTheShippedFlipPolicyAndSaysHowEachThrowEnded(@TempDir Path dir) throws Exception {
         String text = runPrinting("demo", "--headless", "--object", "can", "--loops", "2", "--seed", "1", "--out", dir.toString());
-        assertTrue(text.contains("flip task, can, the learned controller (models/policies/flip-can.json, alone)"), text);
+        assertTrue(text.contains("flip task, can, the learned controller (models/policies/flip-can.json, models/policies/flip-can-opening.json for each "
+                + "episode's first throw, alone)"), text);
         assertTrue(text.contains("throw   1/2: turned") && text.contains("throw   2/2: turned"), text);
         JsonNode summary = Json.load(dir.resolve("summary.json")).node();
         assertEquals("flip", summary.get("task").asText());
