@@ -196,7 +196,7 @@ final class EvaluateCommand implements Callable<Integer> {
                 .put("seed", episodeOptions.seed);
         Path policy = controller.equals("learned") ? who.policyFile(object) : null;
         s.put("policy", policy != null ? policy.toAbsolutePath().normalize().toString() : null);
-        Path opening = controller.equals("learned") ? openingFile() : null;
+        Path opening = openingFile(); // null for the nominal controller
         s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
         s.put("throw_height", throwHeight);
         s.put("copies", copies);
@@ -288,7 +288,10 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         ObjectSpec spec = Wiring.object(object);
         StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
-        ThrowPolicyFile.throwPolicy(file, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
-        return t -> ThrowPolicyFile.throwPolicy(file, opening, t, spec, hand);
+        // each file read once, each worker's task given its own policy
+        ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
+        ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.load(opening);
+        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, t, spec, hand);
     }
 }

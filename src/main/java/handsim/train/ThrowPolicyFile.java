@@ -56,14 +56,24 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * ({@link ThrowPolicy#withOpening}). Fails as {@link #forTask} does for either file.
      */
     public static ThrowPolicy throwPolicy(Path file, Path opening, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
-        ThrowPolicy rest = load(file).forTask(task, object, hand);
+        return throwPolicy(load(file), opening == null ? null : load(opening), opening, task, object, hand);
+    }
+
+    /**
+     * {@link #throwPolicy(Path, Path, ThrowTask, ObjectSpec, StateVector.Hand)} from files already
+     * loaded ({@code opening} null for none), for callers that make a policy per worker;
+     * {@code openingFile} names the opening's file in an error.
+     */
+    public static ThrowPolicy throwPolicy(ThrowPolicyFile policy, ThrowPolicyFile opening, Path openingFile, ThrowTask task,
+            ObjectSpec object, StateVector.Hand hand) {
+        ThrowPolicy rest = policy.forTask(task, object, hand);
         if (opening == null) {
             return rest;
         }
         try {
-            return ThrowPolicy.withOpening(load(opening).forTask(task, object, hand), rest);
+            return ThrowPolicy.withOpening(opening.forTask(task, object, hand), rest);
         } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("the opening policy " + opening + ": " + e.getMessage(), e);
+            throw new IllegalArgumentException("the opening policy " + openingFile + ": " + e.getMessage(), e);
         }
     }
 
