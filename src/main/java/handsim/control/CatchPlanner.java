@@ -1,6 +1,7 @@
 package handsim.control;
 
 import handsim.kin.Frame;
+import handsim.math.EndOverEnd;
 import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
@@ -83,8 +84,18 @@ public final class CatchPlanner {
 
     /** {@link #plan} meeting the object as {@code style} says instead of this planner's own way. */
     public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach, CatchStyle style) {
+        return plan(object, spec, grasp, readyRotation, reach, style, null);
+    }
+
+    /**
+     * {@link #plan} of an object in flight that has turned {@code turnSoFar} since it left the
+     * hand (the summed rotation vector of its long axis's turns, {@link EndOverEnd#step}; null
+     * when not known), for a level search that asks for a turn ({@link CatchStyle.Level#minTurn}).
+     */
+    public Plan plan(RigidState object, ObjectSpec spec, Grasp grasp, Quat readyRotation, Reach reach, CatchStyle style,
+            Vec3 turnSoFar) {
         double t = style.level() == null || spec.longAxis().isEmpty() ? interceptionTime(object, style.planeShift())
-                : levelInterceptionTime(object, spec, style.planeShift(), style.level());
+                : levelInterceptionTime(object, spec, style.planeShift(), style.level(), turnSoFar);
         Vec3 p = ballistics.position(object.position(), object.velocity(), t);
         Vec3 v = ballistics.velocity(object.velocity(), t);
         Optional<Vec3> axis = longAxisAt(object, spec, t);
@@ -105,11 +116,22 @@ public final class CatchPlanner {
     /**
      * The interception time on the plane nearest {@code shift}, within the search's reach below
      * and above, where the long axis is predicted ({@link #longAxisAt}) to lie level within its
-     * tilt; or, when it is level on none of them, on the plane where it is nearest to level.
+     * tilt and, when the search asks for a turn and {@code turnSoFar} is known, the object to
+     * have turned that far ({@link #predictedTurn}). When it is level on some plane but turned on
+     * none of those, on the nearest turned plane within the search's turn tilt, or else on the
+     * most turned plane within it (when it is more turned than the nearest level one), or else on
+     * the nearest level one; when it is level on none, on the plane where it is nearest to level.
      */
-    private double levelInterceptionTime(RigidState object, ObjectSpec spec, double shift, CatchStyle.Level level) {
+    private double levelInterceptionTime(RigidState object, ObjectSpec spec, double shift, CatchStyle.Level level,
+            Vec3 turnSoFar) {
         int below = (int) Math.floor(level.below() / level.step() + 1e-9);
         int above = (int) Math.floor(level.above() / level.step() + 1e-9);
+        boolean askTurn = level.minTurn() > 0 && turnSoFar != null;
+        double nearestLevel = Double.NaN;
+        double levelTurn = Double.NaN;
+        double nearestTurned = Double.NaN;
+        double mostTurned = Double.NaN;
+        double mostTurn = Double.NEGATIVE_INFINITY;
         double bestTime = interceptionTime(object, shift);
         double bestTilt = Double.POSITIVE_INFINITY;
         for (int k = 0; k <= 2 * Math.max(below, above); k++) {
@@ -119,15 +141,56 @@ public final class CatchPlanner {
             }
             double t = interceptionTime(object, shift + n * level.step());
             double tilt = Math.asin(Math.min(1, Math.abs(longAxisAt(object, spec, t).orElseThrow().y())));
-            if (tilt <= level.tilt()) {
+            double turn = askTurn ? predictedTurn(object, spec, turnSoFar, t) : Double.POSITIVE_INFINITY;
+            boolean turned = turn >= level.minTurn();
+            if (tilt <= level.tilt() && turned) {
                 return t;
+            }
+            if (tilt <= level.tilt() && Double.isNaN(nearestLevel)) {
+                nearestLevel = t;
+                levelTurn = turn;
+            }
+            if (tilt <= level.turnTilt() && turned && Double.isNaN(nearestTurned)) {
+                nearestTurned = t;
+            }
+            if (tilt <= level.turnTilt() && turn > mostTurn) {
+                mostTurn = turn;
+                mostTurned = t;
             }
             if (tilt < bestTilt) {
                 bestTilt = tilt;
                 bestTime = t;
             }
         }
-        return bestTime;
+        if (Double.isNaN(nearestLevel)) {
+            return bestTime;
+        }
+        return !Double.isNaN(nearestTurned) ? nearestTurned : mostTurn > levelTurn ? mostTurned : nearestLevel;
+    }
+
+    /** Step (s) of the predicted flight along which {@link #predictedTurn} sums the axis's turns. */
+    private static final double TURN_STEP = 0.005;
+
+    /**
+     * The net end-over-end turn (rad, {@link EndOverEnd#net}) the object will have made {@code t}
+     * seconds from now, having turned {@code turnSoFar} already: its torque-free long axis
+     * ({@link FreeRotation}) followed in {@link #TURN_STEP} ticks, their turns summed as the
+     * flip criterion sums them.
+     */
+    double predictedTurn(RigidState object, ObjectSpec spec, Vec3 turnSoFar, double t) {
+        Vec3 axis0 = spec.longAxis().orElseThrow();
+        FreeRotation free = new FreeRotation(spec.mass().inertia());
+        FreeRotation.Spin spin = new FreeRotation.Spin(object.orientation(), object.angularVelocity());
+        Vec3 axis = spin.orientation().rotate(axis0);
+        Vec3 turn = turnSoFar;
+        int steps = (int) Math.ceil(Math.max(0, t) / TURN_STEP);
+        for (int i = 0; i < steps; i++) {
+            spin = free.after(spin.orientation(), spin.angularVelocity(), t / steps);
+            Vec3 next = spin.orientation().rotate(axis0);
+            turn = turn.plus(EndOverEnd.step(axis, next));
+            axis = next;
+        }
+        return EndOverEnd.net(turn, ballistics.gravity().normalized().negate());
     }
 
     /** The k-th step of a search outward from where it starts, nearest first: 0, +1, -1, +2, -2, ... */

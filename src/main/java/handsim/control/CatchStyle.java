@@ -38,19 +38,44 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
      * predicted long axis is at most {@code tilt} out of the horizontal is taken, or, when none
      * is, the one nearest to level.
      *
+     * <p>With a {@code minTurn}, a plane counts as level only once the object is also predicted
+     * to have turned that far end over end since it left the hand; when no plane is level and
+     * turned, the nearest turned one within {@code turnTilt} of level is taken, or else the most
+     * turned one within it; when no plane is level, the search is the plain one. A throw that
+     * would just miss its flip on the level plane is so met lower down, after more turn.
+     *
      * @param below how far the plane may move down (m): a later catch, after more turn
      * @param above how far the plane may move up (m): an earlier catch
      * @param step spacing of the tried planes (m)
      * @param tilt a long axis this far out of the horizontal (rad) counts as level
+     * @param minTurn the end-over-end turn in flight (rad, {@link handsim.math.EndOverEnd#net})
+     *     a plane must be predicted to come after; 0 for none
+     * @param turnTilt how far out of level (rad) a plane met for its turn may be
      */
-    public record Level(double below, double above, double step, double tilt) {
+    public record Level(double below, double above, double step, double tilt, double minTurn, double turnTilt) {
+
+        /** A search for a level plane alone, whatever the turn. */
+        public Level(double below, double above, double step, double tilt) {
+            this(below, above, step, tilt, 0, tilt);
+        }
 
         static Level parse(Json j) {
             j.allow("comment");
+            double tiltDeg = j.number("tiltDeg", 0, 90);
             Level l = new Level(j.number("below", 0, 0.3), j.number("above", 0, 0.3), j.number("step", 0.001, 0.3),
-                    Math.toRadians(j.number("tiltDeg", 0, 90)));
+                    Math.toRadians(tiltDeg), Math.toRadians(j.has("minTurnDeg") ? j.number("minTurnDeg", 0, 3600) : 0),
+                    Math.toRadians(j.has("turnTiltDeg") ? j.number("turnTiltDeg", 0, 90) : tiltDeg));
             j.requireNoUnknownFields();
             return l;
+        }
+
+        ObjectNode toJson() {
+            ObjectNode j = Json.mapper().createObjectNode().put("below", below).put("above", above).put("step", step)
+                    .put("tiltDeg", Math.toDegrees(tilt));
+            if (minTurn > 0) {
+                j.put("minTurnDeg", Math.toDegrees(minTurn)).put("turnTiltDeg", Math.toDegrees(turnTilt));
+            }
+            return j;
         }
     }
 
@@ -68,8 +93,7 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
     public ObjectNode toJson() {
         ObjectNode j = Json.mapper().createObjectNode().put("planeShift", planeShift).put("velocityFraction", velocityFraction);
         if (level != null) {
-            j.putObject("level").put("below", level.below()).put("above", level.above()).put("step", level.step())
-                    .put("tiltDeg", Math.toDegrees(level.tilt()));
+            j.set("level", level.toJson());
         }
         if (offset.norm() > 0) {
             j.set("offset", Json.array(offset.toArray()));

@@ -1,5 +1,7 @@
 package handsim.control;
 
+import handsim.math.Vec3;
+
 import handsim.sim.RigidState;
 
 /**
@@ -26,6 +28,13 @@ public final class ControllerState {
      * started, each later one as chosen when its THROW began; null: the controller's own way.
      */
     CatchStyle catchStyle;
+    /**
+     * The object's long axis at the last tick, and its turns since it last touched the hand,
+     * summed as rotation vectors ({@link handsim.math.EndOverEnd#step}): how far a thrown object
+     * has turned so far, for a catch that waits for a turn. Null until the hand first touches it.
+     */
+    Vec3 objectAxis;
+    Vec3 turnSinceTouch;
     /** The hand closed on a contact since the current CATCH began. */
     boolean closedOnContact;
     HandPose handPose;
@@ -101,6 +110,8 @@ public final class ControllerState {
         c.catchEnd = catchEnd;
         c.currentThrow = currentThrow;
         c.catchStyle = catchStyle;
+        c.objectAxis = objectAxis;
+        c.turnSinceTouch = turnSinceTouch;
         c.closedOnContact = closedOnContact;
         c.handPose = handPose;
         c.poseFrom = poseFrom.clone();

@@ -2,6 +2,7 @@ package handsim.control;
 
 import handsim.kin.Frame;
 import handsim.kin.Kinematics;
+import handsim.math.EndOverEnd;
 import handsim.math.Hermite;
 import handsim.math.Quat;
 import handsim.math.Vec3;
@@ -133,6 +134,7 @@ public final class NominalController {
 
     /** {@link #update} and {@link #beginThrow}: {@code decision} is the throw's when one begins, else null. */
     private void advance(Observation obs, ControllerState s, ThrowDecision decision) {
+        followTurn(obs, s);
         // the hand closes at the first hand-object contact since CATCH began (sec. 3.1)
         if (obs.handTouchedObject() && !s.closedOnContact && (s.phase == Phase.CATCH || s.phase == Phase.MIDDLE)) {
             s.closedOnContact = true;
@@ -156,6 +158,23 @@ public final class NominalController {
         }
         double w = Math.max(0, Math.min(1, (obs.time() - s.poseStart) / s.poseDuration));
         poses.slerp(s.poseFrom, poses.pose(s.handPose), w, s.targets);
+    }
+
+    /**
+     * Sums the object's end-over-end turns since it last touched the hand, tick by tick, as the
+     * flip criterion does from the release: what the catch's level search adds its predicted turn to.
+     */
+    private void followTurn(Observation obs, ControllerState s) {
+        if (object.longAxis().isEmpty()) {
+            return;
+        }
+        Vec3 axis = obs.object().orientation().rotate(object.longAxis().get());
+        if (obs.handTouchedObject()) {
+            s.turnSinceTouch = Vec3.ZERO;
+        } else if (s.turnSinceTouch != null) {
+            s.turnSinceTouch = s.turnSinceTouch.plus(EndOverEnd.step(s.objectAxis, axis));
+        }
+        s.objectAxis = axis;
     }
 
     /** The state has run its time; with a {@link ClosedLoopRelease}, THROW ends on the object's predicted turn. */
@@ -219,7 +238,7 @@ public final class NominalController {
     private void planCatch(Observation obs, Vec3 p0, Vec3 v0, Quat r0, ControllerState s) {
         CatchPlanner.Plan plan = planner.plan(obs.object(), object, grasp, neutralPalm.rotation(),
                 palm -> ik.solve(s.ikSolution.clone(), palm, config.reachIkIterations()),
-                s.catchStyle == null ? config.catchStyle() : s.catchStyle);
+                s.catchStyle == null ? config.catchStyle() : s.catchStyle, s.turnSinceTouch);
         s.plan = plan;
         s.plannedFrom = obs.object();
         s.plannedAt = obs.time();

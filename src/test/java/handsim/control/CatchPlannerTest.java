@@ -165,6 +165,49 @@ class CatchPlannerTest {
         assertEquals(fallTime(PLANE), tumblingCanMet(0, 0.15).duration(), TOLERANCE, "met on the plane");
     }
 
+    /**
+     * The tumbling can of {@link #tumblingCanMet}, searched 0.15 m down in 1 cm steps for an axis
+     * within 5 deg of level that has also turned {@code minTurnDeg} since it left the hand,
+     * having turned {@code turnSoFar} (rad, about world z) before now.
+     */
+    private CatchPlanner.Plan tumblingCanTurned(double minTurnDeg, double turnSoFar) {
+        double t0 = fallTime(PLANE);
+        Quat q0 = Quat.fromAxisAngle(Vec3.Z, Math.toRadians(60) - 15 * t0);
+        RigidState can = new RigidState(new Vec3(0.05, 1.1, 0.35), q0, Vec3.ZERO, new Vec3(0, 0, 15));
+        CatchStyle style = new CatchStyle(0, 0.7,
+                new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(5), Math.toRadians(minTurnDeg), Math.toRadians(5)));
+        return planner.plan(can, TestSupport.object("can"), centred, ready, ANYWHERE, style, new Vec3(0, 0, turnSoFar));
+    }
+
+    @Test
+    void aTurnedCatchWaitsUntilTheCanHasAlsoTurnedFarEnough() {
+        // the steady tumble turns the axis 15 t rad about z: on the plane 0.09 m lower (3.2 deg out
+        // of level, the plain level catch) it has turned 266.0 deg, 0.10 m lower 268.9 deg (0.4
+        // deg out of level), 0.11 m lower 271.6 deg (2.4 deg), 0.12 m lower 5.2 deg out of level
+        assertEquals(fallTime(PLANE - 0.10), tumblingCanTurned(267, 0).duration(), TOLERANCE, "0.10 m lower: turned 268.9 deg");
+        assertEquals(fallTime(PLANE - 0.09), tumblingCanTurned(260, 0).duration(), TOLERANCE, "turned enough on the level plane");
+        // the turn before now adds: 5.7 deg more makes 0.09 m lower 271.7 deg, short of 272, 0.10 m 274.6
+        assertEquals(fallTime(PLANE - 0.10), tumblingCanTurned(272, 0.1).duration(), TOLERANCE, "the turn so far counts");
+        // turned 272 deg nowhere within 5 deg of level: the most turned plane within it, 0.11 m lower
+        assertEquals(fallTime(PLANE - 0.11), tumblingCanTurned(272, 0).duration(), TOLERANCE, "the most turned plane");
+    }
+
+    @Test
+    void thePredictedTurnSumsTheAxissTurnsAlongTheFreeFlight() {
+        ObjectSpec can = TestSupport.object("can");
+        // the axis (body y) upright, end over end about world z, a principal axis: 15 rad/s for
+        // 0.3 s, plus 0.5 rad before; steady, so the sum is exact to rounding
+        RigidState tumbling = new RigidState(new Vec3(0, 1, 0), Quat.IDENTITY, Vec3.ZERO, new Vec3(0, 0, 15));
+        assertEquals(0.5 + 4.5, planner.predictedTurn(tumbling, can, new Vec3(0, 0, 0.5), 0.3), 1e-9, "steady tumble");
+        // turning back against the turn so far takes it off
+        assertEquals(4.5 - 0.5, planner.predictedTurn(tumbling, can, new Vec3(0, 0, -0.5), 0.3), 1e-9, "turns back cancel");
+        // a flat spin: the axis (body y) lying along world x, turning about the vertical, turns
+        // about the vertical only: no end-over-end turn
+        RigidState spinning = new RigidState(new Vec3(0, 1, 0), Quat.fromAxisAngle(Vec3.Z, -Math.PI / 2), Vec3.ZERO,
+                new Vec3(0, 15, 0));
+        assertEquals(0, planner.predictedTurn(spinning, can, Vec3.ZERO, 0.3), 1e-9, "flat spin");
+    }
+
     @Test
     void graspOffsetPlacesTheObjectOnTheHand() {
         // the object's centre arrives at (0, -halfThickness, 0) + offset in the palm frame

@@ -132,6 +132,31 @@ class NominalControllerTest {
         assertEquals(0.3, chosen.palmVelocity().y() / chosen.objectVelocity().y(), 1e-9);
     }
 
+    @Test
+    void theObjectsTurnIsSummedFromItsLastTouchOfTheHand() {
+        // a can whose long axis (body y) turns 0.02 rad a tick about world z (horizontal: end over
+        // end): the controller sums the ticks' turns (EndOverEnd.step) as the flip criterion does,
+        // from the last tick the hand touched it; none is known before the first touch
+        NominalController canController = new NominalController(model, config, TestSupport.object("can"), GRAVITY);
+        ControllerState s = canController.start(observe(0, model.poseVector("neutral"), false));
+        assertEquals(null, s.turnSinceTouch, "not touched yet: no turn known");
+        for (int k = 1; k <= 12; k++) {
+            canController.update(turnedCan(k, k <= 2), s);
+        }
+        // touched at ticks 1 and 2, free for ticks 3..12: ten ticks of 0.02 rad about +z
+        assertEquals(0, s.turnSinceTouch.distance(new Vec3(0, 0, 0.2)), 1e-12, "ten free ticks summed");
+        canController.update(turnedCan(13, true), s);
+        assertEquals(Vec3.ZERO, s.turnSinceTouch, "a touch starts the count again");
+    }
+
+    /** Tick {@code k} of the can turned 0.02 k rad about world z, touching the hand or not. */
+    private Observation turnedCan(int k, boolean touched) {
+        Observation o = observe(k * tick, model.poseVector("neutral"), touched);
+        RigidState can = new RigidState(o.object().position(), Quat.fromAxisAngle(Vec3.Z, 0.02 * k), o.object().velocity(),
+                new Vec3(0, 0, 0.02 / tick));
+        return new Observation(o.time(), o.q(), o.qd(), o.palm(), o.palmVelocity(), can, o.touchedBodies());
+    }
+
     /** One tick of the controller: at a throw's decision the throw {@code thrown} begins. */
     private static void advance(NominalController c, Observation o, ControllerState s, ThrowDecision thrown) {
         if (c.throwDue(o, s)) {

@@ -335,14 +335,17 @@ class FlipTaskTest {
     @Test
     void aCatchAfterEachFlipIsSetPerObjectAndABadOneIsNamed() throws Exception {
         ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        // the shipped can is caught level (configs/tasks/flip.json), the club as the controller catches
-        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15)), new Vec3(0, 0, -0.0075)),
-                can.controller(base).catchAfterThrow().orElseThrow());
+        // the shipped can is caught level and turned (configs/tasks/flip.json), the club as the controller catches
+        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15), Math.toRadians(143),
+                Math.toRadians(25)), new Vec3(0, 0, -0.0075)), can.controller(base).catchAfterThrow().orElseThrow());
         ObjectNode root = (ObjectNode) Json.mapper().readTree(Files.readString(Home.resolve("configs/tasks/flip.json")));
         ObjectNode level = ((ObjectNode) root.at("/objects/can/catch/level")).put("step", 0);
         ConfigException badLevel = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badLevel.getMessage().contains("step") && badLevel.getMessage().contains("0"), badLevel.getMessage());
-        level.put("step", 0.01);
+        level.put("step", 0.01).put("minTurnDeg", -10);
+        ConfigException badTurn = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(badTurn.getMessage().contains("minTurnDeg") && badTurn.getMessage().contains("-10"), badTurn.getMessage());
+        level.put("minTurnDeg", 140);
         ((ObjectNode) root.at("/objects/can/catch")).putArray("offset").add(0).add(0).add(-0.05);
         ConfigException badOffset = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badOffset.getMessage().contains("offset") && badOffset.getMessage().contains("0.05"), badOffset.getMessage());

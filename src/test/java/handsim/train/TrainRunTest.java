@@ -207,8 +207,9 @@ class TrainRunTest {
 
         TrainConfig level = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), Json.load(file).node(),
                 Map.of("run.catch", "{\"planeShift\": 0, \"velocityFraction\": 0.7, \"level\": {\"below\": 0.15, \"above\": 0, "
-                        + "\"step\": 0.01, \"tiltDeg\": 15}, \"offset\": [0, 0, -0.0075]}"))));
-        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15)), new Vec3(0, 0, -0.0075)),
+                        + "\"step\": 0.01, \"tiltDeg\": 15, \"minTurnDeg\": 143, \"turnTiltDeg\": 25}, \"offset\": [0, 0, -0.0075]}"))));
+        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15), Math.toRadians(143),
+                Math.toRadians(25)), new Vec3(0, 0, -0.0075)),
                 level.run().catchAfterThrow(), "--set gives the run the task's level catch (configs/train/README.md)");
         assertEquals(level, TrainConfig.parse(Json.of("saved", level.toJson())), "and its folder's config keeps it");
 
