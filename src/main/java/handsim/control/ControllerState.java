@@ -1,7 +1,6 @@
 package handsim.control;
 
 import handsim.math.Vec3;
-
 import handsim.sim.RigidState;
 
 /**
