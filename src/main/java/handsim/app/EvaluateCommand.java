@@ -4,6 +4,7 @@ import handsim.sim.Simulator;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.control.ThrowPolicy;
 import handsim.evaluation.EpisodeJournal;
@@ -271,6 +272,15 @@ final class EvaluateCommand implements Callable<Integer> {
         return ThrowPolicyFile.shippedOpening(task, object);
     }
 
+    /** The opening policy's file read, an error in it named as the opening policy's. */
+    private static ThrowPolicyFile openingLoaded(Path file) {
+        try {
+            return ThrowPolicyFile.load(file);
+        } catch (ConfigException e) {
+            throw new ConfigException("the opening policy " + e.getMessage(), e);
+        }
+    }
+
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
@@ -290,7 +300,7 @@ final class EvaluateCommand implements Callable<Integer> {
         StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
         // each file read once, each worker's task given its own policy
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
-        ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.load(opening);
+        ThrowPolicyFile loadedOpening = opening == null ? null : openingLoaded(opening);
         ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
         return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, t, spec, hand);
     }

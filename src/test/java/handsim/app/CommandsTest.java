@@ -38,9 +38,9 @@ class CommandsTest {
         assertEquals(2, Files.readAllLines(dir.resolve("loops.csv")).size(), "a header and one row per throw");
     }
 
-    /** --opening-policy is refused, naming why, where it cannot apply and when its file is missing; nothing runs. */
+    /** --opening-policy is refused, naming why, where it cannot apply and when its file is missing or malformed; nothing runs. */
     @Test
-    void anOpeningPolicyGoesWithTheLearnedFlipAndAFileThatExists(@TempDir Path dir) {
+    void anOpeningPolicyGoesWithTheLearnedFlipAndAFileThatExists(@TempDir Path dir) throws Exception {
         String policy = "models/policies/flip-can.json";
         ExportCommandTest.Result nominal = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--episodes", "1",
                 "--opening-policy", policy);
@@ -61,6 +61,13 @@ class CommandsTest {
         assertEquals(2, other.code());
         assertTrue(other.err().contains("the opening policy models/policies/height-sphere.json: this policy was trained for the height task"),
                 other.err());
+        // a file cut short: the JSON reader's message, named as the opening policy's
+        Path cut = dir.resolve("cut.json");
+        Files.writeString(cut, Files.readString(Path.of("models/policies/flip-can-opening.json")).substring(0, 300));
+        ExportCommandTest.Result malformed = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
+                "learned", "--episodes", "1", "--opening-policy", cut.toString());
+        assertEquals(2, malformed.code());
+        assertTrue(malformed.err().contains("the opening policy " + cut + ": not valid JSON"), malformed.err());
     }
 
     @Test
