@@ -27,6 +27,9 @@ import java.util.stream.Collectors;
  */
 final class FlipEvaluation extends TaskEvaluation {
 
+    /** The loops plot's height as a multiple of the loop cap: room above the highest bars for the legend. */
+    private static final double LEGEND_ROOM = 1.15;
+
     FlipEvaluation(EvaluationRequest request, EvaluationSetup setup) {
         super(request, setup);
     }
@@ -213,7 +216,7 @@ final class FlipEvaluation extends TaskEvaluation {
             }
             new Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
                     request.controllerLabel(), object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
-                    Plot.Style.BARS).writePng(plot);
+                    Plot.Style.BARS).yRange(0, LEGEND_ROOM * request.loops()).writePng(plot);
             console.println("wrote " + plot);
             Path rotationPlot = besidePlot("-rotation");
             plotByRotation(bins, rotationPlot);
