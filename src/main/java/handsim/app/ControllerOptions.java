@@ -8,7 +8,8 @@ import picocli.CommandLine.Option;
 /**
  * Who throws, declared once for every command that runs a catch-and-throw loop ({@code
  * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at, the
- * nominal or a learned controller, the learned controller's policy and the throw planner. Left
+ * nominal or a learned controller, the learned controller's policy (and the flip's opening
+ * policy) and the throw planner. Left
  * out, an option is null (false for {@code --plan}); {@link #task()} and {@link #controller()}
  * give the defaults.
  */
@@ -23,6 +24,12 @@ final class ControllerOptions {
     @Option(names = "--policy", paramLabel = "FILE",
             description = "the learned controller's policy (default: the shipped models/policies/<task>-<object>.json)")
     Path policy;
+
+    @Option(names = "--opening-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for each episode's first throw, made from the object caught out "
+                    + "of the launch (default: with the shipped policy, models/policies/flip-<object>-opening.json when it "
+                    + "exists; with --policy, that policy makes every throw)")
+    Path openingPolicy;
 
     @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
             + "world first (handsim.evaluation.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
@@ -53,6 +60,14 @@ final class ControllerOptions {
         }
         if (policy != null && !controller().equals("learned")) {
             throw new IllegalArgumentException("--policy goes with --controller learned");
+        }
+        validateOpening();
+    }
+
+    /** Refuses an opening policy where no learned flip is thrown. */
+    void validateOpening() {
+        if (openingPolicy != null && (!task().equals("flip") || !controller().equals("learned"))) {
+            throw new IllegalArgumentException("--opening-policy goes with the flip task and --controller learned");
         }
     }
 

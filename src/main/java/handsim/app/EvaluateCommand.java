@@ -56,12 +56,6 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     EpisodeOptions episodeOptions;
 
-    @Option(names = "--opening-policy", paramLabel = "FILE",
-            description = "flip, learned controller: the policy for each episode's first throw, made from the object caught out "
-                    + "of the launch (default: with the shipped policy, models/policies/flip-<object>-opening.json when it "
-                    + "exists; with --policy, that policy makes every throw)")
-    Path openingPolicy;
-
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch "
             + "(default: configs/tasks/height.json evaluationThrows); flip: the most flip-and-catch loops an episode runs to "
             + "(default: configs/tasks/flip.json evaluationLoops); --copies: throws per copy (default: configs/evaluation.json "
@@ -231,9 +225,6 @@ final class EvaluateCommand implements Callable<Integer> {
         if (copies != null && csv != null) {
             throw new IllegalArgumentException("--csv goes without --copies (a sensitivity run writes its figures with --json)");
         }
-        if (openingPolicy != null && (!task.equals("flip") || !controller.equals("learned"))) {
-            throw new IllegalArgumentException("--opening-policy goes with the flip task and --controller learned");
-        }
         if (who.plan && (!task.equals("flip") || copies != null)) {
             throw new IllegalArgumentException("--plan goes with the flip task and without --copies");
         }
@@ -266,8 +257,8 @@ final class EvaluateCommand implements Callable<Integer> {
      * makes every throw).
      */
     private Path openingFile() {
-        if (openingPolicy != null || who.policy != null || !controller.equals("learned")) {
-            return openingPolicy;
+        if (who.openingPolicy != null || who.policy != null || !controller.equals("learned")) {
+            return who.openingPolicy;
         }
         return ThrowPolicyFile.shippedOpening(task, object);
     }

@@ -44,18 +44,21 @@ final class ShippedScenes implements SceneCatalog {
     private final HeightGoals goals;
     private final HeightControl heightControl;
     private final Path policy;
+    private final Path opening;
     private final boolean plan;
     private final List<String> objects;
 
     /**
      * {@code goals} are shared by every scene opened (moving the goal survives a switch of
-     * object); {@code policy} is the learned controller's file, or null; with {@code plan} a
-     * {@link handsim.evaluation.ThrowPlanner} chooses the flip task's throws.
+     * object); {@code policy} is the learned controller's file, or null, {@code opening} the
+     * policy for each flip episode's first throw, or null; with {@code plan} a {@link
+     * handsim.evaluation.ThrowPlanner} chooses the flip task's throws.
      */
-    ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, boolean plan) {
+    ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, Path opening, boolean plan) {
         this.goals = goals;
         this.heightControl = heightControl;
         this.policy = policy;
+        this.opening = opening;
         this.plan = plan;
         this.objects = listObjects();
     }
@@ -74,13 +77,16 @@ final class ShippedScenes implements SceneCatalog {
         }
     }
 
-    /** Rejects names this catalog does not list and a --policy file that does not exist (typos on the command line). */
+    /** Rejects names this catalog does not list and a --policy or --opening-policy file that does not exist (typos on the command line). */
     void validate(SceneSetup s) {
         check("--task", s.task(), TASKS);
         check("--object", s.object(), objects);
         check("--controller", s.controller(), CONTROLLERS);
         if (policy != null && !Files.isRegularFile(policy)) { // a typo, not a policy that does not fit: refused
             throw new IllegalArgumentException("--policy: no file " + policy);
+        }
+        if (opening != null && !Files.isRegularFile(opening)) {
+            throw new IllegalArgumentException("--opening-policy: no file " + opening);
         }
     }
 
@@ -147,14 +153,16 @@ final class ShippedScenes implements SceneCatalog {
 
     /**
      * The learned throw policy for a setup: {@code --policy} if given (and meant for this task
-     * and object), else the shipped one; the exception's message says why there is none.
+     * and object), else the shipped one; each episode's first throw by {@code --opening-policy}
+     * if given (and meant for them), else, with the shipped policy, by the shipped opening; the
+     * exception's message says why there is none.
      */
     private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
         Path file = policy;
-        Path opening = null;
+        Path opening = this.opening != null && matches(this.opening, setup) ? this.opening : null;
         if (file == null || !matches(file, setup)) {
             file = ThrowPolicyFile.shipped(setup.task(), setup.object());
-            opening = ThrowPolicyFile.shippedOpening(setup.task(), setup.object());
+            opening = opening != null ? opening : ThrowPolicyFile.shippedOpening(setup.task(), setup.object());
             if (!Files.isRegularFile(file)) {
                 throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
                         + " (none shipped; give --policy FILE)");

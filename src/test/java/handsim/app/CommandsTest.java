@@ -38,6 +38,32 @@ class CommandsTest {
         assertEquals(2, Files.readAllLines(dir.resolve("loops.csv")).size(), "a header and one row per throw");
     }
 
+    /**
+     * export (and render, view) take --opening-policy as evaluate does: refused in one line where
+     * no learned flip is thrown or the file is missing, nothing written; with --policy it makes
+     * each episode's first throw of the scene.
+     */
+    @Test
+    void theSceneCommandsTakeAnOpeningPolicy(@TempDir Path dir) {
+        String opening = "models/policies/flip-can-opening.json";
+        ExportCommandTest.Result nominal = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--seconds", "0.5",
+                "--opening-policy", opening, "--out", dir.resolve("a.bvh").toString());
+        assertEquals(2, nominal.code());
+        assertTrue(nominal.err().contains("--opening-policy goes with the flip task and --controller learned"), nominal.err());
+        Path missing = dir.resolve("none.json");
+        ExportCommandTest.Result absent = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--controller",
+                "learned", "--seconds", "0.5", "--opening-policy", missing.toString(), "--out", dir.resolve("b.bvh").toString());
+        assertEquals(2, absent.code());
+        assertTrue(absent.err().contains("--opening-policy: no file " + missing), absent.err());
+        assertTrue(!Files.exists(dir.resolve("a.bvh")) && !Files.exists(dir.resolve("b.bvh")), "nothing written");
+        ExportCommandTest.Result both = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--controller", "learned",
+                "--seconds", "0.5", "--policy", "models/policies/flip-can.json", "--opening-policy", opening, "--out",
+                dir.resolve("c.bvh").toString());
+        assertEquals(0, both.code(), both.err());
+        assertTrue(!both.out().contains("using the nominal controller"), both.out());
+        assertTrue(Files.exists(dir.resolve("c.bvh")));
+    }
+
     /** --opening-policy is refused, naming why, where it cannot apply and when its file is missing or malformed; nothing runs. */
     @Test
     void anOpeningPolicyGoesWithTheLearnedFlipAndAFileThatExists(@TempDir Path dir) throws Exception {
@@ -295,7 +321,7 @@ class CommandsTest {
 
     @Test
     void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, false);
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, null, false);
         // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
         SceneCatalog.Opened opened = catalog.open(new SceneSetup("flip", "cuboid", "learned", 1));
         try (InteractiveScene scene = opened.scene()) {
@@ -318,7 +344,7 @@ class CommandsTest {
 
     @Test
     void theViewersPlannedFlipSceneShowsThePlannersWorkAndOtherTasksAreNotPlannedWithANote() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, true);
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, null, true);
         SceneCatalog.Opened flip = catalog.open(new SceneSetup("flip", "can", "learned", 101));
         try (InteractiveScene scene = flip.scene()) {
             assertTrue(flip.notes().isEmpty(), String.join(" | ", flip.notes()));
