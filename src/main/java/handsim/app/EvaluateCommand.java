@@ -125,6 +125,7 @@ final class EvaluateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        String commit = Provenance.gitCommit(); // the code this run begins with
         task = who.task();
         controller = who.controller();
         object = episodeOptions.object;
@@ -171,7 +172,7 @@ final class EvaluateCommand implements Callable<Integer> {
         if (journal != null) {
             out.put("episodes_resumed", journal.resumed());
         }
-        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs()));
+        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs(), commit));
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);

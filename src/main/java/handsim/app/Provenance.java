@@ -16,8 +16,16 @@ final class Provenance {
 
     /** The provenance of a result made by {@code scripts/handsim ARGS...}, after its inputs were read. */
     static com.fasterxml.jackson.databind.node.ObjectNode of(java.util.List<String> args) {
+        return of(args, gitCommit());
+    }
+
+    /**
+     * The same, with the {@code commit} ({@link #gitCommit}) read when the run began: a long run's
+     * tree may be committed or changed before it ends, and its result is the code it began with.
+     */
+    static com.fasterxml.jackson.databind.node.ObjectNode of(java.util.List<String> args, String commit) {
         var o = com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode();
-        o.put("commit", gitCommit());
+        o.put("commit", commit);
         o.put("command", "scripts/handsim " + String.join(" ", args));
         var files = o.putObject("files");
         handsim.config.ReadLog.files().forEach(files::put);
