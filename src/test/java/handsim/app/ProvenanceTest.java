@@ -12,8 +12,8 @@ class ProvenanceTest {
 
     @Test
     void aRunRecordsTheCommitItBeganWithAndItsCommandLine() {
-        // evaluate reads the commit before it runs: a tree committed during a long run must not
-        // name the new commit for results of the old code
+        // evaluate reads the commit before it runs and hands it here: a tree committed during a
+        // long run must not name a commit whose code did not make the result
         var p = Provenance.of(List.of("evaluate", "--task", "flip"), "0123abc+changes");
         assertEquals("0123abc+changes", p.get("commit").asText());
         assertEquals("scripts/handsim evaluate --task flip", p.get("command").asText());

@@ -52,9 +52,10 @@ class ShippedPoliciesTest {
      * The shipped can-flip controller's golden run (models/policies/flip-can.json, its opening
      * flip-can-opening.json making the first throw): from the throw-in of seed 30001 (fixed before
      * any result on it was seen, docs/results.md) it makes 2 flip-and-catch loops in a row with the
-     * task's catch (configs/tasks/flip.json: level, 7.5 mm toward the thumb); its first throw turns
-     * the can 294.201986 degrees end over end, its second 202.438773, its third only 71.648922 (no
-     * flip), all as measured with these policies, physics and controller. A guard that they still
+     * task's catch (configs/tasks/flip.json: level and turned, 7.5 mm toward the thumb); its first
+     * throw turns the can 294.201986 degrees end over end, its second 202.438773, its third only
+     * 72.335069 (no flip; met on a lower plane, as predicted short of the turn), all as measured
+     * with these policies, physics and controller. A guard that they still
      * do what they did, not a measure of the policies (their means are in docs/results.md); the
      * turns, doubles from a deterministic simulation, are compared to 1e-6 degrees.
      */
@@ -68,7 +69,7 @@ class ShippedPoliciesTest {
         assertEquals(2, evaluation.successesInARow(loops), "flip-and-catch loops in a row: " + loops);
         assertEquals(294.201986, Math.toDegrees(loops.get(1).flightRotation()), 1e-6, "the first throw's turn (deg): " + loops);
         assertEquals(202.438773, Math.toDegrees(loops.get(2).flightRotation()), 1e-6, "the second throw's turn (deg): " + loops);
-        assertEquals(71.648922, Math.toDegrees(loops.get(3).flightRotation()), 1e-6, "the third throw's turn (deg): " + loops);
+        assertEquals(72.335069, Math.toDegrees(loops.get(3).flightRotation()), 1e-6, "the third throw's turn (deg): " + loops);
     }
 
     /** An evaluation of {@code task} with {@code object} thrown by the shipped policy (and its opening, when one ships). */
