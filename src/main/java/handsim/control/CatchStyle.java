@@ -39,9 +39,9 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
      * is, the one nearest to level.
      *
      * <p>With a {@code minTurn}, a plane counts as level only once the object is also predicted
-     * to have turned that far end over end since it left the hand; when no plane is level and
-     * turned, the nearest turned one within {@code turnTilt} of level is taken, or else the most
-     * turned one within it; when no plane is level, the search is the plain one. A throw that
+     * to have turned that far end over end since it left the hand; when some plane is level but
+     * none of those is turned, the nearest turned one within {@code turnTilt} of level is taken,
+     * or else the most turned one within it; when no plane is level, the search is the plain one. A throw that
      * would just miss its flip on the level plane is so met lower down, after more turn.
      *
      * @param below how far the plane may move down (m): a later catch, after more turn
@@ -50,7 +50,7 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
      * @param tilt a long axis this far out of the horizontal (rad) counts as level
      * @param minTurn the end-over-end turn in flight (rad, {@link handsim.math.EndOverEnd#net})
      *     a plane must be predicted to come after; 0 for none
-     * @param turnTilt how far out of level (rad) a plane met for its turn may be
+     * @param turnTilt how far out of level (rad) a plane met for its turn may be (at least {@code tilt})
      */
     public record Level(double below, double above, double step, double tilt, double minTurn, double turnTilt) {
 
@@ -62,9 +62,13 @@ public record CatchStyle(double planeShift, double velocityFraction, Level level
         static Level parse(Json j) {
             j.allow("comment");
             double tiltDeg = j.number("tiltDeg", 0, 90);
+            if (j.has("turnTiltDeg") && !j.has("minTurnDeg")) {
+                throw j.fieldError("turnTiltDeg", "goes with minTurnDeg (the turn a plane met for its turn must come after)");
+            }
+            double turnTiltDeg = j.has("turnTiltDeg") ? j.number("turnTiltDeg", tiltDeg, 90) : tiltDeg;
             Level l = new Level(j.number("below", 0, 0.3), j.number("above", 0, 0.3), j.number("step", 0.001, 0.3),
                     Math.toRadians(tiltDeg), Math.toRadians(j.has("minTurnDeg") ? j.number("minTurnDeg", 0, 3600) : 0),
-                    Math.toRadians(j.has("turnTiltDeg") ? j.number("turnTiltDeg", 0, 90) : tiltDeg));
+                    Math.toRadians(turnTiltDeg));
             j.requireNoUnknownFields();
             return l;
         }

@@ -161,8 +161,9 @@ public final class NominalController {
     }
 
     /**
-     * Sums the object's end-over-end turns since it last touched the hand, tick by tick, as the
-     * flip criterion does from the release: what the catch's level search adds its predicted turn to.
+     * Sums the object's end-over-end turns tick by tick from the last tick it touched the hand (the
+     * flip criterion's release is the tick after, one tick's turn less): what the catch's level
+     * search adds its predicted turn to.
      */
     private void followTurn(Observation obs, ControllerState s) {
         if (object.longAxis().isEmpty()) {

@@ -216,7 +216,7 @@ final class FlipEvaluation extends TaskEvaluation {
             }
             new Plot(String.format(Locale.ROOT, "Flip-and-catch loops in a row, %s controller, %s (mean %.2f)",
                     request.controllerLabel(), object, mean), "episode seed", "loops").add("loops in a row", x, y, Plot.BLUE,
-                    Plot.Style.BARS).yRange(0, LEGEND_ROOM * request.loops()).writePng(plot);
+                    Plot.Style.BARS).yRange(0, LEGEND_ROOM * Math.max(1, request.loops())).writePng(plot);
             console.println("wrote " + plot);
             Path rotationPlot = besidePlot("-rotation");
             plotByRotation(bins, rotationPlot);

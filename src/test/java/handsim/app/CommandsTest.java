@@ -1,6 +1,7 @@
 package handsim.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -16,6 +17,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -44,7 +46,7 @@ class CommandsTest {
      * each episode's first throw of the scene.
      */
     @Test
-    void theSceneCommandsTakeAnOpeningPolicy(@TempDir Path dir) {
+    void theSceneCommandsTakeAnOpeningPolicy(@TempDir Path dir) throws Exception {
         String opening = "models/policies/flip-can-opening.json";
         ExportCommandTest.Result nominal = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--seconds", "0.5",
                 "--opening-policy", opening, "--out", dir.resolve("a.bvh").toString());
@@ -56,12 +58,20 @@ class CommandsTest {
         assertEquals(2, absent.code());
         assertTrue(absent.err().contains("--opening-policy: no file " + missing), absent.err());
         assertTrue(!Files.exists(dir.resolve("a.bvh")) && !Files.exists(dir.resolve("b.bvh")), "nothing written");
-        ExportCommandTest.Result both = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--controller", "learned",
-                "--seconds", "0.5", "--policy", "models/policies/flip-can.json", "--opening-policy", opening, "--out",
-                dir.resolve("c.bvh").toString());
+        // 2.5 s take in the launch, the catch, MIDDLE and the first throw (it begins about 1.3-1.6 s in)
+        String[] policyAlone = {"export", "--task", "flip", "--object", "can", "--controller", "learned", "--seconds", "2.5",
+            "--policy", "models/policies/flip-can.json", "--out", dir.resolve("alone.bvh").toString()};
+        ExportCommandTest.Result alone = ExportCommandTest.run(policyAlone);
+        assertEquals(0, alone.code(), alone.err());
+        String[] withOpening = Arrays.copyOf(policyAlone, policyAlone.length + 2);
+        withOpening[withOpening.length - 3] = dir.resolve("opening.bvh").toString();
+        withOpening[withOpening.length - 2] = "--opening-policy";
+        withOpening[withOpening.length - 1] = opening;
+        ExportCommandTest.Result both = ExportCommandTest.run(withOpening);
         assertEquals(0, both.code(), both.err());
         assertTrue(!both.out().contains("using the nominal controller"), both.out());
-        assertTrue(Files.exists(dir.resolve("c.bvh")));
+        assertNotEquals(Files.readString(dir.resolve("alone.bvh")), Files.readString(dir.resolve("opening.bvh")),
+                "the opening makes the first throw otherwise than the policy alone");
     }
 
     /** --opening-policy is refused, naming why, where it cannot apply and when its file is missing or malformed; nothing runs. */

@@ -171,12 +171,17 @@ class CatchPlannerTest {
      * having turned {@code turnSoFar} (rad, about world z) before now.
      */
     private CatchPlanner.Plan tumblingCanTurned(double minTurnDeg, double turnSoFar) {
+        return tumblingCanTurned(minTurnDeg, 5, new Vec3(0, 0, turnSoFar));
+    }
+
+    /** The same, a plane met for its turn within {@code turnTiltDeg} of level; {@code turnSoFar} null when not known. */
+    private CatchPlanner.Plan tumblingCanTurned(double minTurnDeg, double turnTiltDeg, Vec3 turnSoFar) {
         double t0 = fallTime(PLANE);
         Quat q0 = Quat.fromAxisAngle(Vec3.Z, Math.toRadians(60) - 15 * t0);
         RigidState can = new RigidState(new Vec3(0.05, 1.1, 0.35), q0, Vec3.ZERO, new Vec3(0, 0, 15));
         CatchStyle style = new CatchStyle(0, 0.7,
-                new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(5), Math.toRadians(minTurnDeg), Math.toRadians(5)));
-        return planner.plan(can, TestSupport.object("can"), centred, ready, ANYWHERE, style, new Vec3(0, 0, turnSoFar));
+                new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(5), Math.toRadians(minTurnDeg), Math.toRadians(turnTiltDeg)));
+        return planner.plan(can, TestSupport.object("can"), centred, ready, ANYWHERE, style, turnSoFar);
     }
 
     @Test
@@ -190,6 +195,13 @@ class CatchPlannerTest {
         assertEquals(fallTime(PLANE - 0.10), tumblingCanTurned(272, 0.1).duration(), TOLERANCE, "the turn so far counts");
         // turned 272 deg nowhere within 5 deg of level: the most turned plane within it, 0.11 m lower
         assertEquals(fallTime(PLANE - 0.11), tumblingCanTurned(272, 0).duration(), TOLERANCE, "the most turned plane");
+        // with planes met for their turn up to 10 deg out of level: 0.13 m lower (7.9 deg, 277.1
+        // deg) is the nearest turned 275 deg; the level ones (0.09-0.11 m) are not
+        assertEquals(fallTime(PLANE - 0.13), tumblingCanTurned(275, 10, Vec3.ZERO).duration(), TOLERANCE,
+                "the nearest turned plane within the turn tilt");
+        // no turn asked, or none known: the plain level catch, 0.09 m lower
+        assertEquals(fallTime(PLANE - 0.09), tumblingCanTurned(0, 10, Vec3.ZERO).duration(), TOLERANCE, "no turn asked");
+        assertEquals(fallTime(PLANE - 0.09), tumblingCanTurned(275, 10, null).duration(), TOLERANCE, "turn so far unknown");
     }
 
     @Test

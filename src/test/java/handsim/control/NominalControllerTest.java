@@ -135,15 +135,16 @@ class NominalControllerTest {
     @Test
     void theObjectsTurnIsSummedFromItsLastTouchOfTheHand() {
         // a can whose long axis (body y) turns 0.02 rad a tick about world z (horizontal: end over
-        // end): the controller sums the ticks' turns (EndOverEnd.step) as the flip criterion does,
-        // from the last tick the hand touched it; none is known before the first touch
+        // end): the controller sums the ticks' turns (EndOverEnd.step) from the last tick the hand
+        // touched it (the flip criterion's FlightTracker from the tick after); none is known before
+        // the first touch
         NominalController canController = new NominalController(model, config, TestSupport.object("can"), GRAVITY);
         ControllerState s = canController.start(observe(0, model.poseVector("neutral"), false));
         assertEquals(null, s.turnSinceTouch, "not touched yet: no turn known");
         for (int k = 1; k <= 12; k++) {
             canController.update(turnedCan(k, k <= 2), s);
         }
-        // touched at ticks 1 and 2, free for ticks 3..12: ten ticks of 0.02 rad about +z
+        // touched at ticks 1 and 2, free for ticks 3..12: ten turns of 0.02 rad about +z, from tick 2's axis
         assertEquals(0, s.turnSinceTouch.distance(new Vec3(0, 0, 0.2)), 1e-12, "ten free ticks summed");
         canController.update(turnedCan(13, true), s);
         assertEquals(Vec3.ZERO, s.turnSinceTouch, "a touch starts the count again");

@@ -345,7 +345,15 @@ class FlipTaskTest {
         level.put("step", 0.01).put("minTurnDeg", -10);
         ConfigException badTurn = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badTurn.getMessage().contains("minTurnDeg") && badTurn.getMessage().contains("-10"), badTurn.getMessage());
-        level.put("minTurnDeg", 140);
+        level.put("minTurnDeg", 140).put("turnTiltDeg", 10); // less than tiltDeg 15
+        ConfigException badTurnTilt = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(badTurnTilt.getMessage().contains("turnTiltDeg") && badTurnTilt.getMessage().contains("10"),
+                badTurnTilt.getMessage());
+        level.remove("minTurnDeg");
+        level.put("turnTiltDeg", 25); // without the turn it goes with
+        ConfigException lone = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(lone.getMessage().contains("turnTiltDeg") && lone.getMessage().contains("minTurnDeg"), lone.getMessage());
+        level.put("minTurnDeg", 143);
         ((ObjectNode) root.at("/objects/can/catch")).putArray("offset").add(0).add(0).add(-0.05);
         ConfigException badOffset = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badOffset.getMessage().contains("offset") && badOffset.getMessage().contains("0.05"), badOffset.getMessage());
