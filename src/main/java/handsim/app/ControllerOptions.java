@@ -1,6 +1,7 @@
 package handsim.app;
 
 import handsim.train.ThrowPolicyFile;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import picocli.CommandLine.Option;
@@ -64,10 +65,13 @@ final class ControllerOptions {
         validateOpening();
     }
 
-    /** Refuses an opening policy where no learned flip is thrown. */
+    /** Refuses an opening policy where no learned flip is thrown, and one whose file does not exist (a typo). */
     void validateOpening() {
         if (openingPolicy != null && (!task().equals("flip") || !controller().equals("learned"))) {
             throw new IllegalArgumentException("--opening-policy goes with the flip task and --controller learned");
+        }
+        if (openingPolicy != null && !Files.isRegularFile(openingPolicy)) {
+            throw new IllegalArgumentException("--opening-policy: no file " + openingPolicy);
         }
     }
 

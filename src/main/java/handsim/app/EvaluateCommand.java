@@ -4,7 +4,6 @@ import handsim.sim.Simulator;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.control.ThrowPolicy;
 import handsim.evaluation.EpisodeJournal;
@@ -264,15 +263,6 @@ final class EvaluateCommand implements Callable<Integer> {
         return ThrowPolicyFile.shippedOpening(task, object);
     }
 
-    /** The opening policy's file read, an error in it named as the opening policy's. */
-    private static ThrowPolicyFile openingLoaded(Path file) {
-        try {
-            return ThrowPolicyFile.load(file);
-        } catch (ConfigException e) {
-            throw new ConfigException("the opening policy " + e.getMessage(), e);
-        }
-    }
-
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
@@ -284,15 +274,12 @@ final class EvaluateCommand implements Callable<Integer> {
                     : "no shipped policy for the " + task + " task with a " + object + " (" + Home.root().relativize(file)
                             + "): train one (scripts/handsim train) and give it with --policy");
         }
-        Path opening = openingFile();
-        if (opening != null && !Files.isRegularFile(opening)) {
-            throw new IllegalArgumentException("--opening-policy: no file " + opening);
-        }
+        Path opening = openingFile(); // given: checked to exist by who.validate()
         ObjectSpec spec = Wiring.object(object);
         StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
         // each file read once, each worker's task given its own policy
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
-        ThrowPolicyFile loadedOpening = opening == null ? null : openingLoaded(opening);
+        ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.loadOpening(opening);
         ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
         return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, t, spec, hand);
     }

@@ -77,16 +77,17 @@ final class ShippedScenes implements SceneCatalog {
         }
     }
 
-    /** Rejects names this catalog does not list and a --policy or --opening-policy file that does not exist (typos on the command line). */
+    /**
+     * Rejects names this catalog does not list and a --policy file that does not exist (typos on
+     * the command line; a missing --opening-policy file is refused with the options, {@link
+     * ControllerOptions#validateOpening}).
+     */
     void validate(SceneSetup s) {
         check("--task", s.task(), TASKS);
         check("--object", s.object(), objects);
         check("--controller", s.controller(), CONTROLLERS);
         if (policy != null && !Files.isRegularFile(policy)) { // a typo, not a policy that does not fit: refused
             throw new IllegalArgumentException("--policy: no file " + policy);
-        }
-        if (opening != null && !Files.isRegularFile(opening)) {
-            throw new IllegalArgumentException("--opening-policy: no file " + opening);
         }
     }
 

@@ -2,6 +2,7 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.report.Outputs;
+import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
@@ -56,7 +57,16 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * ({@link ThrowPolicy#withOpening}). Fails as {@link #forTask} does for either file.
      */
     public static ThrowPolicy throwPolicy(Path file, Path opening, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
-        return throwPolicy(load(file), opening == null ? null : load(opening), opening, task, object, hand);
+        return throwPolicy(load(file), opening == null ? null : loadOpening(opening), opening, task, object, hand);
+    }
+
+    /** {@link #load} of an opening policy's file, an error in it named as the opening policy's. */
+    public static ThrowPolicyFile loadOpening(Path file) {
+        try {
+            return load(file);
+        } catch (ConfigException e) {
+            throw new ConfigException("the opening policy " + e.getMessage(), e);
+        }
     }
 
     /**
