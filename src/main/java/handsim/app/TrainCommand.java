@@ -104,19 +104,28 @@ final class TrainCommand implements Callable<Integer> {
 
     /**
      * The environments of a run: its task and object with the shipped controller, launch and
-     * episode configs; a flip run may catch as its config says ({@link TrainConfig.Run#catchAfterThrow}).
+     * episode configs; a flip run may catch as its config says ({@link TrainConfig.Run#catchAfterThrow}) and
+     * leave out the object's arm rest ({@link TrainConfig.Run#armRest}).
      */
     static ThrowEnvFactory environments(TrainConfig.Run run, HandModel model) {
         Tasks tasks = Wiring.tasks();
         ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
         ControllerConfig cc = Wiring.controllerConfig();
         ObjectSpec object = Wiring.object(run.object());
-        Supplier<ThrowTask> task = run.catchAfterThrow() == null ? () -> tasks.create(run.task(), run.object())
-                : () -> ((FlipTask) tasks.create(run.task(), run.object())).catchingAs(run.catchAfterThrow());
+        Supplier<ThrowTask> task = () -> asRun(run, tasks.create(run.task(), run.object()));
         return new ThrowEnvFactory(run.task(), object, task, cc,
                 Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
                 new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
                 new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
+    }
+
+    /** {@code task} with the catch and the arm rest that a flip run's config sets. */
+    private static ThrowTask asRun(TrainConfig.Run run, ThrowTask task) {
+        if (!(task instanceof FlipTask flip)) {
+            return task;
+        }
+        FlipTask caught = run.catchAfterThrow() == null ? flip : flip.catchingAs(run.catchAfterThrow());
+        return run.armRest() ? caught : caught.withoutArmRest();
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */

@@ -35,6 +35,8 @@ import java.util.Optional;
  * @param catchAfterThrow when present, how the catches after the hand's own throws meet the object
  *     (the throw-in is caught with {@code (0, catchVelocityFraction)}); a task sets it ({@link
  *     #withCatchAfterThrow})
+ * @param armRest when present, the posture the arm's redundancy is drawn toward while it goes
+ *     back (GOBACK); a task sets it ({@link #withArmRest})
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
@@ -42,7 +44,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         double closeTime, double neutralTime, ThrowSpace throwSpace, NominalThrows nominalThrows,
         Grasp.Table grasps, CatchPlanner.HeadingSearch headingSearch, int reachIkIterations,
         double replanSpeedChange, double fallingTilt, Optional<ClosedLoopRelease> release,
-        Optional<CatchStyle> catchAfterThrow) {
+        Optional<CatchStyle> catchAfterThrow, Optional<ArmRest> armRest) {
 
     public static ControllerConfig load(Path file) {
         return parse(Json.load(file));
@@ -83,7 +85,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
                 catching.integer("reachIkIterations", 1, 10000),
                 catching.positive("replanSpeedChange"),
                 Math.toRadians(catching.number("fallingTiltDeg", 0, 90)),
-                Optional.empty(), Optional.empty());
+                Optional.empty(), Optional.empty(), Optional.empty());
         for (Json node : new Json[] {fsm, catching, poses, throwing, j}) {
             node.requireNoUnknownFields();
         }
@@ -99,12 +101,17 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
             throw new IllegalArgumentException("a closed-loop release's earliest end (" + r.earliest()
                     + " s) must lie within THROW (" + throwDuration + " s)");
         }
-        return with(Optional.of(r), catchAfterThrow);
+        return with(Optional.of(r), catchAfterThrow, armRest);
     }
 
     /** This config with the catches after the hand's throws meeting the object as {@code style} says. */
     public ControllerConfig withCatchAfterThrow(CatchStyle style) {
-        return with(release, Optional.of(style));
+        return with(release, Optional.of(style), armRest);
+    }
+
+    /** This config with the arm's redundancy drawn toward {@code rest} while the arm goes back ({@link ArmRest}). */
+    public ControllerConfig withArmRest(ArmRest rest) {
+        return with(release, catchAfterThrow, Optional.of(rest));
     }
 
     /** The controller's own way of meeting an object: on the interception plane at catchVelocityFraction. */
@@ -112,10 +119,10 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         return new CatchStyle(0, catchVelocityFraction);
     }
 
-    private ControllerConfig with(Optional<ClosedLoopRelease> r, Optional<CatchStyle> c) {
+    private ControllerConfig with(Optional<ClosedLoopRelease> r, Optional<CatchStyle> c, Optional<ArmRest> a) {
         return new ControllerConfig(pd, ik, periodSteps, catchMinDuration, middleDuration, throwDuration, gobackDuration,
                 interceptionHeight, catchVelocityFraction, restPlaneHeight, throwEndSpeedFactor, openTime, closeTime,
                 neutralTime, throwSpace, nominalThrows, grasps, headingSearch, reachIkIterations, replanSpeedChange, fallingTilt,
-                r, c);
+                r, c, a);
     }
 }

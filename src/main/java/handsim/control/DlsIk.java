@@ -74,13 +74,8 @@ public final class DlsIk {
                     config.maxRotationStep());
             double wp = config.positionWeight(), wo = config.orientationWeight();
             double[] e = {wp * ep.x(), wp * ep.y(), wp * ep.z(), wo * eo.x(), wo * eo.y(), wo * eo.z()};
-            kin.siteJacobian(site, q, dofs, jac);
+            weightedJacobian(q);
             int n = dofs.length;
-            for (int c = 0; c < n; c++) {
-                for (int r = 0; r < 6; r++) {
-                    jac[r * n + c] *= r < 3 ? wp : wo;
-                }
-            }
             java.util.Arrays.fill(frozen, false);
             // at most one pass per DOF: freeze DOFs the step pushes beyond their limits
             for (int pass = 0; pass <= n; pass++) {
@@ -105,6 +100,48 @@ public final class DlsIk {
         }
         Frame end = kin.siteFrame(site, q);
         return new Residual(end.origin().distance(target.origin()), end.rotation().angleTo(target.rotation()));
+    }
+
+    /**
+     * One step of the chain DOFs of {@code q} toward {@code posture} (radians, {@link #dofs} order)
+     * that leaves the site where it is to first order ({@link ArmRest}): {@code v = gain (posture -
+     * q)} less its part the site would feel, {@code dq = v - J+ J v}, with {@code J+} the damped
+     * inverse of eq. (2) and the same row weights. DOFs end within their limits.
+     */
+    public void pullNullSpace(double[] q, double[] posture, double gain) {
+        int n = dofs.length;
+        if (posture.length != n) {
+            throw new IllegalArgumentException("a posture for the " + n + " DOFs of the chain, got " + posture.length);
+        }
+        weightedJacobian(q);
+        java.util.Arrays.fill(frozen, false);
+        double[] v = new double[n];
+        for (int c = 0; c < n; c++) {
+            v[c] = gain * (posture[c] - q[dofs[c]]);
+        }
+        double[] felt = new double[6];
+        for (int r = 0; r < 6; r++) {
+            for (int c = 0; c < n; c++) {
+                felt[r] += jac[r * n + c] * v[c];
+            }
+        }
+        double[] back = step(felt, n);
+        HandModel m = kin.model();
+        for (int c = 0; c < n; c++) {
+            q[dofs[c]] = m.dofs().get(dofs[c]).clamp(q[dofs[c]] + v[c] - back[c]);
+        }
+    }
+
+    /** The site Jacobian at {@code q} over the chain, its position rows times positionWeight, its orientation rows times orientationWeight. */
+    private void weightedJacobian(double[] q) {
+        kin.siteJacobian(site, q, dofs, jac);
+        int n = dofs.length;
+        double wp = config.positionWeight(), wo = config.orientationWeight();
+        for (int c = 0; c < n; c++) {
+            for (int r = 0; r < 6; r++) {
+                jac[r * n + c] *= r < 3 ? wp : wo;
+            }
+        }
     }
 
     /** eq. (2) with frozen columns removed: dq = J^T (J J^T + lambda^2 I)^-1 e. */

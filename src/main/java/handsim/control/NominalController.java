@@ -34,6 +34,8 @@ public final class NominalController {
     private final CatchPlanner planner;
     private final double[] neutralPose;
     private final Frame neutralPalm;
+    /** {@link ArmRest}'s posture in {@link DlsIk#dofs} order, or null. */
+    private final double[] armRest;
 
     /**
      * @param object the object to catch; its name selects the grasp in {@code config}
@@ -57,6 +59,11 @@ public final class NominalController {
                 config.catchVelocityFraction(), config.catchMinDuration(), config.headingSearch(), config.fallingTilt());
         this.neutralPose = model.poseVector("neutral");
         this.neutralPalm = kin.siteFrame(palm, neutralPose);
+        try {
+            this.armRest = config.armRest().map(r -> r.chainVector(model, ik.dofs())).orElse(null);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the arm rest for the " + object.name() + ": " + e.getMessage(), e);
+        }
     }
 
     public ControllerConfig config() {
@@ -153,6 +160,9 @@ public final class NominalController {
         // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
         double t = obs.time() - s.trajectoryStart;
         ik.solve(s.ikSolution, s.phase == Phase.THROW ? s.trajectory.continuedAt(t) : s.trajectory.at(t));
+        if (armRest != null && s.phase == Phase.GOBACK) {
+            ik.pullNullSpace(s.ikSolution, armRest, config.armRest().get().gain());
+        }
         for (int d : ik.dofs()) {
             s.targets[d] = s.ikSolution[d];
         }

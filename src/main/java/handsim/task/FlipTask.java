@@ -2,6 +2,7 @@ package handsim.task;
 
 import handsim.config.Json;
 import handsim.control.CatchStyle;
+import handsim.control.ArmRest;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
@@ -38,9 +39,14 @@ public final class FlipTask implements ThrowTask {
      * @param nominal the hand-tuned flip throw
      * @param release how THROW lets go of this object, when not after its fixed duration
      * @param catchAfterThrow how the catch after each flip meets this object, when not as the controller's
+     * @param armRest the arm posture drawn toward while the arm goes back after each throw, when any
      */
     public record ObjectFlip(double flipAngle, ThrowParameters nominal, Optional<ClosedLoopRelease> release,
-            Optional<CatchStyle> catchAfterThrow) {
+            Optional<CatchStyle> catchAfterThrow, Optional<ArmRest> armRest) {
+
+        ObjectFlip with(Optional<CatchStyle> catching, Optional<ArmRest> rest) {
+            return new ObjectFlip(flipAngle, nominal, release, catching, rest);
+        }
     }
 
     /**
@@ -88,7 +94,8 @@ public final class FlipTask implements ThrowTask {
                 Optional<ClosedLoopRelease> release = o.has("release") ? Optional.of(ClosedLoopRelease.parse(o.get("release")))
                         : Optional.empty();
                 Optional<CatchStyle> catching = o.has("catch") ? Optional.of(CatchStyle.parse(o.get("catch"))) : Optional.empty();
-                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal, release, catching));
+                Optional<ArmRest> rest = o.has("armRest") ? Optional.of(ArmRest.parse(o.get("armRest"))) : Optional.empty();
+                flips.put(name, new ObjectFlip(Math.toRadians(o.number("flipAngleDeg", 1, 3600)), nominal, release, catching, rest));
                 o.requireNoUnknownFields();
             }
             Config c = new Config(Math.toRadians(j.number("toleranceDeg", 0, 180)),
@@ -128,8 +135,12 @@ public final class FlipTask implements ThrowTask {
 
     /** This task with the catches after the hand's throws meeting the object as {@code style} says, not as its config says. */
     public FlipTask catchingAs(CatchStyle style) {
-        return new FlipTask(config, object, new ObjectFlip(flip.flipAngle(), flip.nominal(), flip.release(), Optional.of(style)),
-                target);
+        return new FlipTask(config, object, flip.with(Optional.of(style), flip.armRest()), target);
+    }
+
+    /** This task with the arm's redundancy left to the IK, not drawn toward the object's {@link ArmRest}. */
+    public FlipTask withoutArmRest() {
+        return new FlipTask(config, object, flip.with(flip.catchAfterThrow(), Optional.empty()), target);
     }
 
     /** Whole flips made by a loop's throw (0 for loop 0). */
@@ -180,7 +191,8 @@ public final class FlipTask implements ThrowTask {
     @Override
     public ControllerConfig controller(ControllerConfig base) {
         ControllerConfig released = flip.release().map(base::withRelease).orElse(base);
-        return flip.catchAfterThrow().map(released::withCatchAfterThrow).orElse(released);
+        ControllerConfig caught = flip.catchAfterThrow().map(released::withCatchAfterThrow).orElse(released);
+        return flip.armRest().map(caught::withArmRest).orElse(caught);
     }
 
     /** eq. (7). */

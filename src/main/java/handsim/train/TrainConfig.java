@@ -35,22 +35,29 @@ public record TrainConfig(Run run, LearnerConfig learner) {
      * @param catchAfterThrow flip task only: how the catches after the hand's throws meet the
      *     object while training, instead of as the task says ({@code catch}; null when absent: the
      *     task's catch)
+     * @param armRest flip task only: the arm's redundancy is drawn toward the object's arm rest
+     *     while training as the task says ({@code armRest}; true when absent); false leaves it to the
+     *     IK, as the shipped can policies were trained
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
             double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
-            boolean endAtFailedThrow, CatchStyle catchAfterThrow) {
+            boolean endAtFailedThrow, CatchStyle catchAfterThrow, boolean armRest) {
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.bool("endAtFailedThrow", false), j.has("catch") ? CatchStyle.parse(j.get("catch")) : null);
+                    j.bool("endAtFailedThrow", false), j.has("catch") ? CatchStyle.parse(j.get("catch")) : null,
+                    j.bool("armRest", true));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
             if (r.catchAfterThrow != null && !r.task.equals("flip")) {
                 throw j.fieldError("catch", "only the flip task's catches can be set here, and the task is \"" + r.task + "\"");
+            }
+            if (!r.armRest && !r.task.equals("flip")) {
+                throw j.fieldError("armRest", "only the flip task has an arm rest to leave out, and the task is \"" + r.task + "\"");
             }
             j.requireNoUnknownFields();
             return r;
@@ -81,6 +88,9 @@ public record TrainConfig(Run run, LearnerConfig learner) {
             runNode.remove("endAtFailedThrow");
         }
         runNode.remove("catchAfterThrow");
+        if (run.armRest()) {
+            runNode.remove("armRest");
+        }
         if (run.catchAfterThrow() != null) {
             runNode.set("catch", run.catchAfterThrow().toJson());
         }

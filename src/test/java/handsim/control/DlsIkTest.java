@@ -1,9 +1,11 @@
 package handsim.control;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
 import handsim.config.Home;
+import handsim.config.Json;
 import handsim.kin.Frame;
 import handsim.kin.Kinematics;
 import handsim.math.Quat;
@@ -11,6 +13,7 @@ import handsim.math.Vec3;
 import handsim.model.Dof;
 import handsim.model.HandModel;
 import handsim.model.Site;
+import handsim.task.FlipTask;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -50,6 +53,54 @@ class DlsIkTest {
                     "trial " + trial + ": rotation error " + Math.toDegrees(r.rotation()) + " deg");
             assertInsideLimits(q);
         }
+    }
+
+    @Test
+    void drawingTheArmTowardAPostureTurnsItsRedundancyAndLeavesThePalmWhereItIs() {
+        // GOBACK's ticks with the palm held at rest: solve (2 iterations), then one pull toward the can's arm rest
+        // (configs/tasks/flip.json), from the neutral pose, whose redundancy is far from it (21 deg of shoulder abduction)
+        ArmRest rest = FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))).objects().get("can").armRest()
+                .orElseThrow();
+        double[] posture = rest.chainVector(model, ik.dofs());
+        double[] q = model.poseVector("neutral");
+        Frame atRest = kin.siteFrame(palm, q);
+        double start = chainDistance(q, posture);
+        for (int tick = 0; tick < 1000; tick++) {
+            ik.solve(q, atRest);
+            ik.pullNullSpace(q, posture, rest.gain());
+            Frame now = kin.siteFrame(palm, q);
+            // the pull moves the palm only to second order (and by the damping's leak), and the next solve takes it back
+            assertTrue(now.origin().distance(atRest.origin()) < POSITION_TOLERANCE, "tick " + tick + ": palm moved "
+                    + now.origin().distance(atRest.origin()) + " m");
+            assertTrue(now.rotation().angleTo(atRest.rotation()) < ROTATION_TOLERANCE, "tick " + tick + ": palm turned "
+                    + Math.toDegrees(now.rotation().angleTo(atRest.rotation())) + " deg");
+            assertInsideLimits(q);
+        }
+        // the posture's own palm lies within millimetres of the neutral one (it was measured at throw decisions, the
+        // palm held there by PD), so the chain comes close to it, not onto it: a fifth of the way left at most
+        double end = chainDistance(q, posture);
+        assertTrue(end < 0.2 * start, "distance to the posture " + start + " -> " + end + " rad");
+    }
+
+    @Test
+    void aPostureTheArmAlreadyHasIsNoPull() {
+        double[] q = model.poseVector("neutral");
+        double[] posture = new double[ik.dofs().length];
+        for (int c = 0; c < posture.length; c++) {
+            posture[c] = q[ik.dofs()[c]];
+        }
+        double[] pulled = q.clone();
+        ik.pullNullSpace(pulled, posture, 0.5);
+        assertArrayEquals(q, pulled, 1e-15);
+    }
+
+    private double chainDistance(double[] q, double[] posture) {
+        double sum = 0;
+        for (int c = 0; c < posture.length; c++) {
+            double d = q[ik.dofs()[c]] - posture[c];
+            sum += d * d;
+        }
+        return Math.sqrt(sum);
     }
 
     @Test

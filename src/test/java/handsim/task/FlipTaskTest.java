@@ -11,6 +11,7 @@ import handsim.TestSupport;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.control.ArmRest;
 import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
@@ -330,6 +331,43 @@ class FlipTaskTest {
         FlipTask late = new FlipTask(FlipTask.Config.parse(Json.of("flip.json", root)), "can", TestSupport.neutralPalm());
         IllegalArgumentException tooLate = assertThrows(IllegalArgumentException.class, () -> late.controller(base));
         assertTrue(tooLate.getMessage().contains("earliest"), tooLate.getMessage());
+    }
+
+    @Test
+    void anArmRestIsSetPerObjectAndABadOneIsNamed() throws Exception {
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        ArmRest rest = can.controller(base).armRest().orElseThrow();
+        assertEquals(0.01, rest.gain(), "configs/tasks/flip.json objects.can.armRest");
+        assertEquals(-21.4, rest.jointsDeg().get("shoulder_abduction"), 1e-12);
+        assertEquals(7, rest.chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6}).length, "every DOF of the palm's chain");
+        assertEquals(ArmRest.parse(Json.of("saved", rest.toJson())), rest, "toJson gives it back");
+        assertTrue(new FlipTask(FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))), "club",
+                TestSupport.neutralPalm()).controller(base).armRest().isEmpty(), "per object: the club has none");
+
+        ObjectNode root = (ObjectNode) Json.mapper().readTree(Files.readString(Home.resolve("configs/tasks/flip.json")));
+        ObjectNode armRest = (ObjectNode) root.at("/objects/can/armRest");
+        armRest.put("gain", 0);
+        ConfigException badGain = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(badGain.getMessage().contains("gain") && badGain.getMessage().contains("0"), badGain.getMessage());
+        armRest.put("gain", 0.01);
+        ObjectNode joints = (ObjectNode) armRest.get("jointsDeg");
+        int[] chain = {0, 1, 2, 3, 4, 5, 6};
+        joints.put("index_mcp_flexion", 10); // a finger's DOF is not the arm's
+        ArmRest finger = ArmRest.parse(Json.of("flip.json", armRest));
+        IllegalArgumentException notChain = assertThrows(IllegalArgumentException.class,
+                () -> finger.chainVector(TestSupport.model(), chain));
+        assertTrue(notChain.getMessage().contains("index_mcp_flexion"), notChain.getMessage());
+        joints.remove("index_mcp_flexion");
+        joints.remove("wrist_deviation");
+        ArmRest missing = ArmRest.parse(Json.of("flip.json", armRest));
+        IllegalArgumentException lacks = assertThrows(IllegalArgumentException.class,
+                () -> missing.chainVector(TestSupport.model(), chain));
+        assertTrue(lacks.getMessage().contains("wrist_deviation"), lacks.getMessage());
+        joints.put("wrist_deviation", -40); // the model's range is [-30, 20]
+        ArmRest beyond = ArmRest.parse(Json.of("flip.json", armRest));
+        IllegalArgumentException outside = assertThrows(IllegalArgumentException.class,
+                () -> beyond.chainVector(TestSupport.model(), chain));
+        assertTrue(outside.getMessage().contains("wrist_deviation") && outside.getMessage().contains("-40"), outside.getMessage());
     }
 
     @Test

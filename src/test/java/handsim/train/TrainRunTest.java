@@ -221,6 +221,30 @@ class TrainRunTest {
     }
 
     @Test
+    void theShippedFlipRunsLeaveOutTheArmRestAsTheirPoliciesWereTrained() {
+        // configs/tasks/flip.json draws the can's arm toward its arm rest after each throw; the shipped can policies were
+        // trained without it, so their configs (configs/train/flip*.json) leave it out, and the run folder keeps that
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        FlipTask task = (FlipTask) TestSupport.tasks().create("flip", "can");
+        assertTrue(task.controller(base).armRest().isPresent(), "the task's can has an arm rest");
+        for (String name : new String[] {"flip", "flip-opening", "flip-warmstart", "flip-dagger"}) {
+            assertFalse(TrainConfig.Run.parse(Json.load(Home.resolve("configs/train/" + name + ".json")).get("run")).armRest(), name);
+        }
+        TrainConfig flip = TrainConfig.load(Home.resolve("configs/train/flip.json"));
+        assertEquals(flip, TrainConfig.parse(Json.of("saved", flip.toJson())), "the run folder's config gives it back");
+        assertTrue(task.withoutArmRest().controller(base).armRest().isEmpty());
+        assertEquals(task.controller(base).catchAfterThrow(), task.withoutArmRest().controller(base).catchAfterThrow(),
+                "the catch stays the task's");
+
+        Path height = Home.resolve("configs/train/height.json");
+        assertTrue(TrainConfig.load(height).run().armRest(), "absent: as the task says");
+        ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
+        ((ObjectNode) node.get("run")).put("armRest", false);
+        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(Json.of("height", node)));
+        assertTrue(e.getMessage().contains("armRest") && e.getMessage().contains("height"), e.getMessage());
+    }
+
+    @Test
     void aConfigNamesAnUnknownStateEncoding() {
         Path file = Home.resolve("configs/train/height.json");
         ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(

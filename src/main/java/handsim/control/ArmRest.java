@@ -1,0 +1,88 @@
+package handsim.control;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import handsim.model.Dof;
+import handsim.model.HandModel;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * The arm posture the IK draws the arm's redundancy toward while the arm goes back (GOBACK). The
+ * palm's pose fixes six of the seven DOFs of its chain (shoulder 3, elbow 1, wrist 3); the seventh,
+ * the swivel of the elbow about the shoulder-wrist line, follows the path of the IK's solutions
+ * (eq. 2 has no term for it). Over a juggler's first loops it drifts from where the catch of the
+ * throw-in leaves it to where the loops hold it, and a policy trained on long episodes throws from
+ * the latter. Each IK iteration of GOBACK moves the chain by {@code gain} of its difference to the
+ * posture, projected on the null space of the palm's Jacobian ({@link DlsIk#pullNullSpace}): the
+ * palm's path stays the same, and at the posture the pull is zero. The hand's catches and MIDDLE
+ * are left alone, and so is the throw-in's catch (there is no GOBACK before it).
+ *
+ * @param jointsDeg the posture (deg), by DOF name: every DOF of the palm's chain
+ * @param gain the share of the difference moved per IK iteration, in (0, 1]
+ */
+public record ArmRest(Map<String, Double> jointsDeg, double gain) {
+
+    public ArmRest {
+        jointsDeg = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(jointsDeg));
+        if (!(gain > 0 && gain <= 1)) {
+            throw new IllegalArgumentException("an arm rest's gain must lie in (0, 1], got " + gain);
+        }
+    }
+
+    /** {@code {jointsDeg: {name: deg, ...}, gain}}. */
+    public static ArmRest parse(Json j) {
+        j.allow("comment");
+        Json joints = j.get("jointsDeg");
+        Map<String, Double> deg = new LinkedHashMap<>();
+        for (String name : joints.fieldNames()) {
+            deg.put(name, joints.number(name, -360, 360));
+        }
+        ArmRest r = new ArmRest(deg, j.number("gain", 1e-6, 1));
+        j.requireNoUnknownFields();
+        return r;
+    }
+
+    public ObjectNode toJson() {
+        ObjectNode j = Json.mapper().createObjectNode();
+        ObjectNode joints = j.putObject("jointsDeg");
+        jointsDeg.forEach(joints::put);
+        j.put("gain", gain);
+        return j;
+    }
+
+    /**
+     * The posture in radians in the order of {@code chainDofs} (model DOF indices). Fails naming the
+     * DOF when the posture misses one of the chain, names one outside it, or lies outside a DOF's range.
+     */
+    public double[] chainVector(HandModel model, int[] chainDofs) {
+        Map<String, Integer> chain = new LinkedHashMap<>();
+        for (int d : chainDofs) {
+            chain.put(model.dofs().get(d).name(), d);
+        }
+        for (String name : jointsDeg.keySet()) {
+            if (!chain.containsKey(name)) {
+                throw new IllegalArgumentException("armRest.jointsDeg: \"" + name + "\" is not a DOF of the palm's chain ("
+                        + String.join(", ", chain.keySet()) + ")");
+            }
+        }
+        double[] q = new double[chainDofs.length];
+        int c = 0;
+        for (Map.Entry<String, Integer> e : chain.entrySet()) {
+            Double deg = jointsDeg.get(e.getKey());
+            if (deg == null) {
+                throw new IllegalArgumentException("armRest.jointsDeg: no angle for " + e.getKey() + " (it needs every DOF of "
+                        + chain.keySet().stream().collect(Collectors.joining(", ")) + ")");
+            }
+            Dof dof = model.dofs().get(e.getValue());
+            q[c] = Math.toRadians(deg);
+            if (q[c] < dof.lower() || q[c] > dof.upper()) {
+                throw new IllegalArgumentException("armRest.jointsDeg." + e.getKey() + ": " + deg + " deg lies outside the DOF's range ["
+                        + Json.show(Math.toDegrees(dof.lower())) + ", " + Json.show(Math.toDegrees(dof.upper())) + "] deg");
+            }
+            c++;
+        }
+        return q;
+    }
+}
