@@ -25,14 +25,14 @@ class OpeningThrowTest {
 
     /**
      * Seed 103 (ThrowPlannerTest.NOMINAL_FAILS): the nominal flip, caught as the controller
-     * catches, succeeds at the first throw and fails at the second. With the nominal throw as both
+     * catches (no arm rest), succeeds at the first throw and fails at the second. With the nominal throw as both
      * the opening and the loop's policy, the opening is asked once, at the first decision, the other
      * policy at every later one, and the episode is the one a single policy plays, bit for bit.
      */
     @Test
     void theOpeningIsAskedAtTheFirstThrowOnly() {
         ControllerConfig controller = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(controller.catchStyle());
+        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(controller.catchStyle()).withoutArmRest();
         List<Double> openingAsked = new ArrayList<>(), restAsked = new ArrayList<>();
         ThrowPolicy withOpening = ThrowPolicy.withOpening(obs -> {
             openingAsked.add(obs.time());
