@@ -14,13 +14,14 @@ import java.util.stream.Collectors;
  * the swivel of the elbow about the shoulder-wrist line, follows the path of the IK's solutions
  * (eq. 2 has no term for it). Over a juggler's first loops it drifts from where the catch of the
  * throw-in leaves it to where the loops hold it, and a policy trained on long episodes throws from
- * the latter. Each IK iteration of GOBACK moves the chain by {@code gain} of its difference to the
- * posture, projected on the null space of the palm's Jacobian ({@link DlsIk#pullNullSpace}): the
- * palm's path stays the same, and at the posture the pull is zero. The hand's catches and MIDDLE
+ * the latter. Each control tick of GOBACK, after its IK solve, moves the chain by {@code gain} of its
+ * difference to the posture, projected on the null space of the palm's Jacobian ({@link
+ * DlsIk#pullNullSpace}): the palm keeps its path (to first order; the next solve corrects the
+ * rest), and at the posture the pull is zero. The hand's catches and MIDDLE
  * are left alone, and so is the throw-in's catch (there is no GOBACK before it).
  *
  * @param jointsDeg the posture (deg), by DOF name: every DOF of the palm's chain
- * @param gain the share of the difference moved per IK iteration, in (0, 1]
+ * @param gain the share of the difference moved per control tick, in (0, 1]
  */
 public record ArmRest(Map<String, Double> jointsDeg, double gain) {
 
@@ -39,7 +40,11 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
         for (String name : joints.fieldNames()) {
             deg.put(name, joints.number(name, -360, 360));
         }
-        ArmRest r = new ArmRest(deg, j.number("gain", 1e-6, 1));
+        double gain = j.number("gain", 0, 1);
+        if (gain == 0) {
+            throw j.fieldError("gain", "must be greater than 0 (in (0, 1]), got 0");
+        }
+        ArmRest r = new ArmRest(deg, gain);
         j.requireNoUnknownFields();
         return r;
     }
@@ -78,7 +83,7 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
             Dof dof = model.dofs().get(e.getValue());
             q[c] = Math.toRadians(deg);
             if (q[c] < dof.lower() || q[c] > dof.upper()) {
-                throw new IllegalArgumentException("armRest.jointsDeg." + e.getKey() + ": " + deg + " deg lies outside the DOF's range ["
+                throw new IllegalArgumentException("armRest.jointsDeg." + e.getKey() + ": " + Json.show(deg) + " deg lies outside the DOF's range ["
                         + Json.show(Math.toDegrees(dof.lower())) + ", " + Json.show(Math.toDegrees(dof.upper())) + "] deg");
             }
             c++;

@@ -106,7 +106,8 @@ public final class DlsIk {
      * One step of the chain DOFs of {@code q} toward {@code posture} (radians, {@link #dofs} order)
      * that leaves the site where it is to first order ({@link ArmRest}): {@code v = gain (posture -
      * q)} less its part the site would feel, {@code dq = v - J+ J v}, with {@code J+} the damped
-     * inverse of eq. (2) and the same row weights. DOFs end within their limits.
+     * inverse of eq. (2) and the same row weights. The damping lets a little of {@code v} through,
+     * and a DOF is clamped to its limits; the next {@link #solve} takes the site back.
      */
     public void pullNullSpace(double[] q, double[] posture, double gain) {
         int n = dofs.length;

@@ -36,8 +36,8 @@ public record TrainConfig(Run run, LearnerConfig learner) {
      *     object while training, instead of as the task says ({@code catch}; null when absent: the
      *     task's catch)
      * @param armRest flip task only: the arm's redundancy is drawn toward the object's arm rest
-     *     while training as the task says ({@code armRest}; true when absent); false leaves it to the
-     *     IK, as the shipped can policies were trained
+     *     while training, as the task says ({@code armRest} true); false, or absent, leaves it to the
+     *     IK, as the shipped can policies and every run folder without the field were trained
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
             double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
@@ -49,15 +49,15 @@ public record TrainConfig(Run run, LearnerConfig learner) {
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
                     j.bool("endAtFailedThrow", false), j.has("catch") ? CatchStyle.parse(j.get("catch")) : null,
-                    j.bool("armRest", true));
+                    j.bool("armRest", false));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
             if (r.catchAfterThrow != null && !r.task.equals("flip")) {
                 throw j.fieldError("catch", "only the flip task's catches can be set here, and the task is \"" + r.task + "\"");
             }
-            if (!r.armRest && !r.task.equals("flip")) {
-                throw j.fieldError("armRest", "only the flip task has an arm rest to leave out, and the task is \"" + r.task + "\"");
+            if (r.armRest && !r.task.equals("flip")) {
+                throw j.fieldError("armRest", "only the flip task has an arm rest, and the task is \"" + r.task + "\"");
             }
             j.requireNoUnknownFields();
             return r;
@@ -88,7 +88,7 @@ public record TrainConfig(Run run, LearnerConfig learner) {
             runNode.remove("endAtFailedThrow");
         }
         runNode.remove("catchAfterThrow");
-        if (run.armRest()) {
+        if (!run.armRest()) {
             runNode.remove("armRest");
         }
         if (run.catchAfterThrow() != null) {

@@ -64,8 +64,8 @@ class ThrowPlannerTest {
 
     /**
      * The nominal flip of {@code object}, its flips caught as the controller catches and the arm's
-     * redundancy left to the IK: the seeds and counts of these tests were measured so, before the
-     * can had a level catch and an arm rest.
+     * redundancy left to the IK (no level catch, no arm rest): the seeds and counts of these tests
+     * were measured so.
      */
     private CatchEvaluation nominalFlip(String object) {
         return CatchEvaluation.nominal(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),

@@ -339,7 +339,13 @@ class FlipTaskTest {
         ArmRest rest = can.controller(base).armRest().orElseThrow();
         assertEquals(0.01, rest.gain(), "configs/tasks/flip.json objects.can.armRest");
         assertEquals(-21.4, rest.jointsDeg().get("shoulder_abduction"), 1e-12);
-        assertEquals(7, rest.chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6}).length, "every DOF of the palm's chain");
+        double[] posture = rest.chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6});
+        assertEquals(Math.toRadians(-21.4), posture[1], 1e-12, "shoulder_abduction is the chain's second DOF");
+        assertEquals(Math.toRadians(-26.0), posture[6], 1e-12, "wrist_deviation its last");
+        java.util.Map<String, Double> reversed = new java.util.LinkedHashMap<>();
+        new java.util.ArrayDeque<>(rest.jointsDeg().keySet()).descendingIterator().forEachRemaining(k -> reversed.put(k, rest.jointsDeg().get(k)));
+        assertArrayEquals(posture, new ArmRest(reversed, rest.gain()).chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6}),
+                "in the chain's order whatever the file's");
         assertEquals(ArmRest.parse(Json.of("saved", rest.toJson())), rest, "toJson gives it back");
         assertTrue(new FlipTask(FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))), "club",
                 TestSupport.neutralPalm()).controller(base).armRest().isEmpty(), "per object: the club has none");
@@ -348,7 +354,7 @@ class FlipTaskTest {
         ObjectNode armRest = (ObjectNode) root.at("/objects/can/armRest");
         armRest.put("gain", 0);
         ConfigException badGain = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
-        assertTrue(badGain.getMessage().contains("gain") && badGain.getMessage().contains("0"), badGain.getMessage());
+        assertTrue(badGain.getMessage().contains("gain") && badGain.getMessage().contains("got 0"), badGain.getMessage());
         armRest.put("gain", 0.01);
         ObjectNode joints = (ObjectNode) armRest.get("jointsDeg");
         int[] chain = {0, 1, 2, 3, 4, 5, 6};

@@ -236,10 +236,15 @@ class TrainRunTest {
         assertEquals(task.controller(base).catchAfterThrow(), task.withoutArmRest().controller(base).catchAfterThrow(),
                 "the catch stays the task's");
 
+        TrainConfig withRest = TrainConfig.parse(Json.of("set", Json.withOverrides("flip.json",
+                Json.load(Home.resolve("configs/train/flip.json")).node(), Map.of("run.armRest", "true"))));
+        assertTrue(withRest.run().armRest(), "--set run.armRest=true trains with it (TrainCommandTest: the environments do)");
+        assertEquals(withRest, TrainConfig.parse(Json.of("saved", withRest.toJson())), "and its folder's config keeps it");
+
         Path height = Home.resolve("configs/train/height.json");
-        assertTrue(TrainConfig.load(height).run().armRest(), "absent: as the task says");
+        assertFalse(TrainConfig.load(height).run().armRest(), "absent: the arm left to the IK, as a run folder without the field trained");
         ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
-        ((ObjectNode) node.get("run")).put("armRest", false);
+        ((ObjectNode) node.get("run")).put("armRest", true);
         ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(Json.of("height", node)));
         assertTrue(e.getMessage().contains("armRest") && e.getMessage().contains("height"), e.getMessage());
     }
