@@ -68,7 +68,7 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
         }
         for (String name : jointsDeg.keySet()) {
             if (!chain.containsKey(name)) {
-                throw new IllegalArgumentException("armRest.jointsDeg: \"" + name + "\" is not a DOF of the palm's chain ("
+                throw new IllegalArgumentException("jointsDeg: \"" + name + "\" is not a DOF of the palm's chain ("
                         + String.join(", ", chain.keySet()) + ")");
             }
         }
@@ -77,17 +77,22 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
         for (Map.Entry<String, Integer> e : chain.entrySet()) {
             Double deg = jointsDeg.get(e.getKey());
             if (deg == null) {
-                throw new IllegalArgumentException("armRest.jointsDeg: no angle for " + e.getKey() + " (it needs every DOF of "
+                throw new IllegalArgumentException("jointsDeg: no angle for " + e.getKey() + " (it needs every DOF of "
                         + chain.keySet().stream().collect(Collectors.joining(", ")) + ")");
             }
             Dof dof = model.dofs().get(e.getValue());
             q[c] = Math.toRadians(deg);
             if (q[c] < dof.lower() || q[c] > dof.upper()) {
-                throw new IllegalArgumentException("armRest.jointsDeg." + e.getKey() + ": " + Json.show(deg) + " deg lies outside the DOF's range ["
-                        + Json.show(Math.toDegrees(dof.lower())) + ", " + Json.show(Math.toDegrees(dof.upper())) + "] deg");
+                throw new IllegalArgumentException("jointsDeg." + e.getKey() + ": " + Json.show(deg) + " deg lies outside the DOF's range ["
+                        + showDeg(dof.lower()) + ", " + showDeg(dof.upper()) + "] deg");
             }
             c++;
         }
         return q;
+    }
+
+    /** An angle (rad) in degrees as the model file writes it (rounded to 1e-9 deg). */
+    private static String showDeg(double rad) {
+        return Json.show(Math.rint(Math.toDegrees(rad) * 1e9) / 1e9);
     }
 }

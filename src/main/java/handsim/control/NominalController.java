@@ -62,7 +62,7 @@ public final class NominalController {
         try {
             this.armRest = config.armRest().map(r -> r.chainVector(model, ik.dofs())).orElse(null);
         } catch (IllegalArgumentException e) {
-            throw new IllegalArgumentException("the arm rest for the " + object.name() + ": " + e.getMessage(), e);
+            throw new IllegalArgumentException("the arm rest for the " + object.name() + " (its armRest): " + e.getMessage(), e);
         }
     }
 
