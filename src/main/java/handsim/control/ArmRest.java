@@ -4,29 +4,35 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.model.Dof;
 import handsim.model.HandModel;
+import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
 import java.util.stream.Collectors;
 
 /**
- * The arm posture the IK draws the arm's redundancy toward while the arm goes back (GOBACK). The
+ * The arm posture the IK draws the arm's redundancy toward in some states of the controller. The
  * palm's pose fixes six of the seven DOFs of its chain (shoulder 3, elbow 1, wrist 3); the seventh,
  * the swivel of the elbow about the shoulder-wrist line, follows the path of the IK's solutions
  * (eq. 2 has no term for it). Over a juggler's first loops it drifts from where the catch of the
  * throw-in leaves it to where the loops hold it, and a policy trained on long episodes throws from
- * the latter. Each control tick of GOBACK, after its IK solve, moves the chain by {@code gain} of its
- * difference to the posture, projected on the null space of the palm's Jacobian ({@link
- * DlsIk#pullNullSpace}): the palm keeps its path (to first order; the next solve corrects the
- * rest), and at the posture the pull is zero. The hand's catches and MIDDLE
- * are left alone, and so is the throw-in's catch (there is no GOBACK before it).
+ * the latter. Each control tick of the states in {@code phases}, after its IK solve, moves the chain
+ * by {@code gain} of its difference to the posture, projected on the null space of the palm's
+ * Jacobian ({@link DlsIk#pullNullSpace}): the palm keeps its path (to first order; the next solve
+ * corrects the rest), and at the posture the pull is zero.
  *
  * @param jointsDeg the posture (deg), by DOF name: every DOF of the palm's chain
  * @param gain the share of the difference moved per control tick, in (0, 1]
+ * @param phases the controller's states in which the arm is drawn (at least one)
  */
-public record ArmRest(Map<String, Double> jointsDeg, double gain) {
+public record ArmRest(Map<String, Double> jointsDeg, double gain, Set<Phase> phases) {
 
     public ArmRest {
         jointsDeg = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(jointsDeg));
+        if (phases.isEmpty()) {
+            throw new IllegalArgumentException("an arm rest needs at least one state to draw the arm in");
+        }
+        phases = java.util.Collections.unmodifiableSet(EnumSet.copyOf(phases));
         if (!(gain > 0 && gain <= 1)) {
             throw new IllegalArgumentException("an arm rest's gain must lie in (0, 1], got " + gain);
         }
@@ -44,7 +50,19 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
         if (gain == 0) {
             throw j.fieldError("gain", "must be greater than 0 (in (0, 1]), got 0");
         }
-        ArmRest r = new ArmRest(deg, gain);
+        Set<Phase> phases = EnumSet.noneOf(Phase.class);
+        for (Json p : j.array("phases")) {
+            String name = p.asString();
+            try {
+                phases.add(Phase.valueOf(name));
+            } catch (IllegalArgumentException e) {
+                throw j.fieldError("phases", "must name controller states (CATCH, MIDDLE, THROW, GOBACK), got \"" + name + "\"");
+            }
+        }
+        if (phases.isEmpty()) {
+            throw j.fieldError("phases", "must name at least one controller state (CATCH, MIDDLE, THROW, GOBACK)");
+        }
+        ArmRest r = new ArmRest(deg, gain, phases);
         j.requireNoUnknownFields();
         return r;
     }
@@ -54,6 +72,7 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain) {
         ObjectNode joints = j.putObject("jointsDeg");
         jointsDeg.forEach(joints::put);
         j.put("gain", gain);
+        phases.forEach(p -> j.withArray("phases").add(p.name()));
         return j;
     }
 

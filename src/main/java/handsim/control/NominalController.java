@@ -160,7 +160,7 @@ public final class NominalController {
         // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
         double t = obs.time() - s.trajectoryStart;
         ik.solve(s.ikSolution, s.phase == Phase.THROW ? s.trajectory.continuedAt(t) : s.trajectory.at(t));
-        if (armRest != null && s.phase == Phase.GOBACK) {
+        if (armRest != null && config.armRest().get().phases().contains(s.phase)) {
             ik.pullNullSpace(s.ikSolution, armRest, config.armRest().get().gain());
         }
         for (int d : ik.dofs()) {

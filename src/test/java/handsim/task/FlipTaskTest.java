@@ -15,6 +15,7 @@ import handsim.control.ArmRest;
 import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
+import handsim.control.Phase;
 import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
 import java.nio.file.Files;
@@ -338,13 +339,14 @@ class FlipTaskTest {
         ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
         ArmRest rest = can.controller(base).armRest().orElseThrow();
         assertEquals(0.01, rest.gain(), "configs/tasks/flip.json objects.can.armRest");
+        assertEquals(java.util.Set.of(Phase.GOBACK, Phase.MIDDLE), rest.phases(), "drawn while the arm goes back and holds the can");
         assertEquals(-21.4, rest.jointsDeg().get("shoulder_abduction"), 1e-12);
         double[] posture = rest.chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6});
         assertEquals(Math.toRadians(-21.4), posture[1], 1e-12, "shoulder_abduction is the chain's second DOF");
         assertEquals(Math.toRadians(-26.0), posture[6], 1e-12, "wrist_deviation its last");
         java.util.Map<String, Double> reversed = new java.util.LinkedHashMap<>();
         new java.util.ArrayDeque<>(rest.jointsDeg().keySet()).descendingIterator().forEachRemaining(k -> reversed.put(k, rest.jointsDeg().get(k)));
-        assertArrayEquals(posture, new ArmRest(reversed, rest.gain()).chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6}),
+        assertArrayEquals(posture, new ArmRest(reversed, rest.gain(), rest.phases()).chainVector(TestSupport.model(), new int[] {0, 1, 2, 3, 4, 5, 6}),
                 "in the chain's order whatever the file's");
         assertEquals(ArmRest.parse(Json.of("saved", rest.toJson())), rest, "toJson gives it back");
         assertTrue(new FlipTask(FlipTask.Config.parse(Json.load(Home.resolve("configs/tasks/flip.json"))), "club",
@@ -356,6 +358,13 @@ class FlipTaskTest {
         ConfigException badGain = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(badGain.getMessage().contains("gain") && badGain.getMessage().contains("got 0"), badGain.getMessage());
         armRest.put("gain", 0.01);
+        ((com.fasterxml.jackson.databind.node.ArrayNode) armRest.get("phases")).add("BREAK");
+        ConfigException badPhase = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(badPhase.getMessage().contains("phases") && badPhase.getMessage().contains("BREAK"), badPhase.getMessage());
+        armRest.putArray("phases");
+        ConfigException noPhase = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
+        assertTrue(noPhase.getMessage().contains("phases"), noPhase.getMessage());
+        armRest.putArray("phases").add("GOBACK");
         ObjectNode joints = (ObjectNode) armRest.get("jointsDeg");
         int[] chain = {0, 1, 2, 3, 4, 5, 6};
         joints.put("index_mcp_flexion", 10); // a finger's DOF is not the arm's
