@@ -8,7 +8,6 @@ import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
-import java.util.stream.Collectors;
 
 /**
  * The arm posture the IK draws the arm's redundancy toward in some states of the controller. The
@@ -38,7 +37,7 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain, Set<Phase> pha
         }
     }
 
-    /** {@code {jointsDeg: {name: deg, ...}, gain}}. */
+    /** {@code {jointsDeg: {name: deg, ...}, gain, phases: [state, ...]}}. */
     public static ArmRest parse(Json j) {
         j.allow("comment");
         Json joints = j.get("jointsDeg");
@@ -97,7 +96,7 @@ public record ArmRest(Map<String, Double> jointsDeg, double gain, Set<Phase> pha
             Double deg = jointsDeg.get(e.getKey());
             if (deg == null) {
                 throw new IllegalArgumentException("jointsDeg: no angle for " + e.getKey() + " (it needs every DOF of "
-                        + chain.keySet().stream().collect(Collectors.joining(", ")) + ")");
+                        + String.join(", ", chain.keySet()) + ")");
             }
             Dof dof = model.dofs().get(e.getValue());
             q[c] = Math.toRadians(deg);

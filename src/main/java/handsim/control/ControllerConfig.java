@@ -35,8 +35,8 @@ import java.util.Optional;
  * @param catchAfterThrow when present, how the catches after the hand's own throws meet the object
  *     (the throw-in is caught with {@code (0, catchVelocityFraction)}); a task sets it ({@link
  *     #withCatchAfterThrow})
- * @param armRest when present, the posture the arm's redundancy is drawn toward while it goes
- *     back (GOBACK); a task sets it ({@link #withArmRest})
+ * @param armRest when present, the posture the arm's redundancy is drawn toward in the states
+ *     it names; a task sets it ({@link #withArmRest})
  */
 public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double catchMinDuration,
         double middleDuration, double throwDuration, double gobackDuration, double interceptionHeight,
@@ -109,7 +109,7 @@ public record ControllerConfig(PdGains pd, IkConfig ik, int periodSteps, double 
         return with(release, Optional.of(style), armRest);
     }
 
-    /** This config with the arm's redundancy drawn toward {@code rest} while the arm goes back ({@link ArmRest}). */
+    /** This config with the arm's redundancy drawn toward {@code rest} in the states it names ({@link ArmRest}). */
     public ControllerConfig withArmRest(ArmRest rest) {
         return with(release, catchAfterThrow, Optional.of(rest));
     }

@@ -34,8 +34,9 @@ public final class NominalController {
     private final CatchPlanner planner;
     private final double[] neutralPose;
     private final Frame neutralPalm;
-    /** {@link ArmRest}'s posture in {@link DlsIk#dofs} order, or null. */
-    private final double[] armRest;
+    /** The config's {@link ArmRest}, or null; its posture in {@link DlsIk#dofs} order. */
+    private final ArmRest armRest;
+    private final double[] armRestPosture;
 
     /**
      * @param object the object to catch; its name selects the grasp in {@code config}
@@ -60,7 +61,8 @@ public final class NominalController {
         this.neutralPose = model.poseVector("neutral");
         this.neutralPalm = kin.siteFrame(palm, neutralPose);
         try {
-            this.armRest = config.armRest().map(r -> r.chainVector(model, ik.dofs())).orElse(null);
+            this.armRest = config.armRest().orElse(null);
+            this.armRestPosture = armRest == null ? null : armRest.chainVector(model, ik.dofs());
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("the arm rest for the " + object.name() + " (its armRest): " + e.getMessage(), e);
         }
@@ -160,8 +162,8 @@ public final class NominalController {
         // palm target along the state's curve, then IK for shoulder, elbow and wrist (eq. 2)
         double t = obs.time() - s.trajectoryStart;
         ik.solve(s.ikSolution, s.phase == Phase.THROW ? s.trajectory.continuedAt(t) : s.trajectory.at(t));
-        if (armRest != null && config.armRest().get().phases().contains(s.phase)) {
-            ik.pullNullSpace(s.ikSolution, armRest, config.armRest().get().gain());
+        if (armRest != null && armRest.phases().contains(s.phase)) {
+            ik.pullNullSpace(s.ikSolution, armRestPosture, armRest.gain());
         }
         for (int d : ik.dofs()) {
             s.targets[d] = s.ikSolution[d];

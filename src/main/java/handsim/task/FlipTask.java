@@ -1,8 +1,8 @@
 package handsim.task;
 
 import handsim.config.Json;
-import handsim.control.CatchStyle;
 import handsim.control.ArmRest;
+import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
@@ -39,7 +39,7 @@ public final class FlipTask implements ThrowTask {
      * @param nominal the hand-tuned flip throw
      * @param release how THROW lets go of this object, when not after its fixed duration
      * @param catchAfterThrow how the catch after each flip meets this object, when not as the controller's
-     * @param armRest the arm posture drawn toward while the arm goes back after each throw, when any
+     * @param armRest the arm posture the arm's redundancy is drawn toward, and in which states, when any
      */
     public record ObjectFlip(double flipAngle, ThrowParameters nominal, Optional<ClosedLoopRelease> release,
             Optional<CatchStyle> catchAfterThrow, Optional<ArmRest> armRest) {
