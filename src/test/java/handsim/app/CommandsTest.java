@@ -48,15 +48,11 @@ class CommandsTest {
     @Test
     void theSceneCommandsTakeAnOpeningPolicy(@TempDir Path dir) throws Exception {
         String opening = "models/policies/flip-can-opening.json";
-        ExportCommandTest.Result nominal = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--seconds", "0.5",
-                "--opening-policy", opening, "--out", dir.resolve("a.bvh").toString());
-        assertEquals(2, nominal.code());
-        assertTrue(nominal.err().contains("--opening-policy goes with the flip task and --controller learned"), nominal.err());
+        assertRefused("--opening-policy goes with the flip task and --controller learned", "export", "--task", "flip", "--object",
+                "can", "--seconds", "0.5", "--opening-policy", opening, "--out", dir.resolve("a.bvh").toString());
         Path missing = dir.resolve("none.json");
-        ExportCommandTest.Result absent = ExportCommandTest.run("export", "--task", "flip", "--object", "can", "--controller",
+        assertRefused("--opening-policy: no file " + missing, "export", "--task", "flip", "--object", "can", "--controller",
                 "learned", "--seconds", "0.5", "--opening-policy", missing.toString(), "--out", dir.resolve("b.bvh").toString());
-        assertEquals(2, absent.code());
-        assertTrue(absent.err().contains("--opening-policy: no file " + missing), absent.err());
         assertTrue(!Files.exists(dir.resolve("a.bvh")) && !Files.exists(dir.resolve("b.bvh")), "nothing written");
         // 2.5 s take in the launch, the catch, MIDDLE and the first throw (it begins about 1.3-1.6 s in)
         String[] policyAlone = {"export", "--task", "flip", "--object", "can", "--controller", "learned", "--seconds", "2.5",
@@ -78,32 +74,29 @@ class CommandsTest {
     @Test
     void anOpeningPolicyGoesWithTheLearnedFlipAndAFileThatExists(@TempDir Path dir) throws Exception {
         String policy = "models/policies/flip-can.json";
-        ExportCommandTest.Result nominal = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--episodes", "1",
-                "--opening-policy", policy);
-        assertEquals(2, nominal.code());
-        assertTrue(nominal.err().contains("--opening-policy goes with the flip task and --controller learned"), nominal.err());
-        ExportCommandTest.Result height = ExportCommandTest.run("evaluate", "--task", "height", "--controller", "learned",
+        assertRefused("--opening-policy goes with the flip task and --controller learned", "evaluate", "--task", "flip",
+                "--object", "can", "--episodes", "1", "--opening-policy", policy);
+        assertRefused("--opening-policy goes with the flip task", "evaluate", "--task", "height", "--controller", "learned",
                 "--episodes", "1", "--opening-policy", policy);
-        assertEquals(2, height.code());
-        assertTrue(height.err().contains("--opening-policy goes with the flip task"), height.err());
         Path missing = dir.resolve("none.json");
-        ExportCommandTest.Result absent = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
+        assertRefused("--opening-policy: no file " + missing, "evaluate", "--task", "flip", "--object", "can", "--controller",
                 "learned", "--episodes", "1", "--opening-policy", missing.toString(), "--json", dir.resolve("out.json").toString());
-        assertEquals(2, absent.code());
-        assertTrue(absent.err().contains("--opening-policy: no file " + missing), absent.err());
         assertTrue(!Files.exists(dir.resolve("out.json")), "nothing written");
-        ExportCommandTest.Result other = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
-                "learned", "--episodes", "1", "--opening-policy", "models/policies/height-sphere.json");
-        assertEquals(2, other.code());
-        assertTrue(other.err().contains("the opening policy models/policies/height-sphere.json: this policy was trained for the height task"),
-                other.err());
+        assertRefused("the opening policy models/policies/height-sphere.json: this policy was trained for the height task",
+                "evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--episodes", "1", "--opening-policy",
+                "models/policies/height-sphere.json");
         // a file cut short: the JSON reader's message, named as the opening policy's
         Path cut = dir.resolve("cut.json");
         Files.writeString(cut, Files.readString(Path.of("models/policies/flip-can-opening.json")).substring(0, 300));
-        ExportCommandTest.Result malformed = ExportCommandTest.run("evaluate", "--task", "flip", "--object", "can", "--controller",
-                "learned", "--episodes", "1", "--opening-policy", cut.toString());
-        assertEquals(2, malformed.code());
-        assertTrue(malformed.err().contains("the opening policy " + cut + ": not valid JSON"), malformed.err());
+        assertRefused("the opening policy " + cut + ": not valid JSON", "evaluate", "--task", "flip", "--object", "can",
+                "--controller", "learned", "--episodes", "1", "--opening-policy", cut.toString());
+    }
+
+    /** Runs {@code args}, which must be refused in one line: exit code 2 and an error containing {@code expected}. */
+    private static void assertRefused(String expected, String... args) {
+        ExportCommandTest.Result r = ExportCommandTest.run(args);
+        assertEquals(2, r.code(), r.err());
+        assertTrue(r.err().contains(expected), r.err());
     }
 
     @Test
