@@ -135,7 +135,7 @@ final class EvaluateCommand implements Callable<Integer> {
         validate();
         EpisodeJournal journal = null;
         if (json != null) {
-            journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature());
+            journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature(), commit);
             if (journal.finished() > 0) {
                 System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
                         journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
@@ -171,7 +171,12 @@ final class EvaluateCommand implements Callable<Integer> {
         if (journal != null) {
             out.put("episodes_resumed", journal.resumed());
         }
-        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs(), commit));
+        ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs(), commit);
+        if (journal != null) {
+            // a resumed run's episodes may come from more than one commit: say which ran how many
+            journal.episodesByCommit().forEach(provenance.putObject("episodes_by_commit")::put);
+        }
+        out.set("provenance", provenance);
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);

@@ -34,9 +34,11 @@ import java.util.Optional;
  * as each finishes: a run that is killed loses only the episodes under way, and the same
  * command run again reads the finished ones back instead of running them. The first line is
  * the run's signature (its options and the hashes of its inputs); a journal whose signature
- * differs belongs to another run and is refused, naming what differs. A line cut short by a
- * kill during its write is dropped on reading. Once the run's results are written the journal
- * is deleted.
+ * differs belongs to another run and is refused, naming what differs. Each episode's line names
+ * the commit of the code that ran it ({@link #episodesByCommit}): the signature holds the inputs,
+ * not the code, so a run resumed after a commit says which episodes each commit ran. A line cut
+ * short by a kill during its write is dropped on reading. Once the run's results are written the
+ * journal is deleted.
  */
 public final class EpisodeJournal {
 
@@ -45,26 +47,34 @@ public final class EpisodeJournal {
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
 
+    /** What an episode's line written without a commit (or by a run outside git) counts under. */
+    public static final String UNRECORDED = "unrecorded";
+
     private final Path file;
+    private final String commit;
     private final Map<Integer, JsonNode> done;
+    private final Map<Integer, String> commits;
     private final int droppedLines;
 
-    private EpisodeJournal(Path file, Map<Integer, JsonNode> done, int droppedLines) {
+    private EpisodeJournal(Path file, String commit, Map<Integer, JsonNode> done, Map<Integer, String> commits, int droppedLines) {
         this.file = file;
+        this.commit = commit;
         this.done = done;
+        this.commits = commits;
         this.droppedLines = droppedLines;
     }
 
     /**
      * The journal at {@code file}: the one a run with this {@code signature} left there, or a new
-     * one. Throws {@link IllegalArgumentException} if the file holds another run's journal.
+     * one; the episodes this run appends are written as run by {@code commit}. Throws {@link
+     * IllegalArgumentException} if the file holds another run's journal.
      */
-    public static EpisodeJournal open(Path file, ObjectNode signature) {
+    public static EpisodeJournal open(Path file, ObjectNode signature, String commit) {
         try {
             if (!Files.exists(file)) {
                 Files.createDirectories(file.toAbsolutePath().getParent());
                 Outputs.writeString(file, MAPPER.writeValueAsString(header(signature)) + "\n");
-                return new EpisodeJournal(file, new HashMap<>(), 0);
+                return new EpisodeJournal(file, commit, new HashMap<>(), new HashMap<>(), 0);
             }
             List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
             JsonNode head = lines.isEmpty() ? null : parse(lines.get(0)).orElse(null);
@@ -78,16 +88,19 @@ public final class EpisodeJournal {
                         + "): delete it to start afresh, or write the results elsewhere");
             }
             Map<Integer, JsonNode> done = new HashMap<>();
+            Map<Integer, String> commits = new HashMap<>();
             int dropped = 0;
             for (String line : lines.subList(1, lines.size())) {
                 Optional<JsonNode> entry = parse(line);
                 if (entry.isPresent() && entry.get().has("index") && entry.get().has("result")) {
-                    done.put(entry.get().get("index").asInt(), entry.get().get("result"));
+                    int index = entry.get().get("index").asInt();
+                    done.put(index, entry.get().get("result"));
+                    commits.put(index, entry.get().path("commit").asText(UNRECORDED));
                 } else {
                     dropped++; // a write cut short by a kill
                 }
             }
-            return new EpisodeJournal(file, done, dropped);
+            return new EpisodeJournal(file, commit, done, commits, dropped);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot use the episode journal " + file, e);
         }
@@ -138,6 +151,16 @@ public final class EpisodeJournal {
     /** The result journaled for episode {@code index}, if an interrupted run of the same command finished it. */
     public synchronized Optional<JsonNode> result(int index) {
         return Optional.ofNullable(done.get(index));
+    }
+
+    /**
+     * How many of the journal's episodes each commit ran (those read back and those this run
+     * finished), by commit; {@link #UNRECORDED} for lines that name none.
+     */
+    public synchronized SortedMap<String, Integer> episodesByCommit() {
+        SortedMap<String, Integer> counts = new TreeMap<>();
+        commits.values().forEach(c -> counts.merge(c, 1, Integer::sum));
+        return counts;
     }
 
     /** How many episodes interrupted runs of the same command finished. */
@@ -200,7 +223,7 @@ public final class EpisodeJournal {
 
     /** Appends the result of episode {@code index} and forces it to disk before returning. */
     public synchronized void append(int index, JsonNode result) {
-        ObjectNode entry = JsonNodeFactory.instance.objectNode().put("index", index);
+        ObjectNode entry = JsonNodeFactory.instance.objectNode().put("index", index).put("commit", commit);
         entry.set("result", result);
         try (FileChannel out = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
             // after a line cut short by a kill, start on a line of one's own
@@ -209,6 +232,7 @@ public final class EpisodeJournal {
             out.write(java.nio.ByteBuffer.wrap(line));
             out.force(false);
             done.put(index, result);
+            commits.put(index, commit);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot append to the episode journal " + file, e);
         }

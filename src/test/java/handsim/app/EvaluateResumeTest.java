@@ -71,6 +71,10 @@ class EvaluateResumeTest {
         assertEquals(handsim.config.ReadLog.sha256(Files.readAllBytes(Home.resolve("configs/sim.json"))),
                 provenance.get("files").get("configs/sim.json").asText());
         assertTrue(provenance.get("files").has("models/arm_hand.json") && provenance.has("commit"), provenance.toString());
+        // both runs were the same code: every one of the 4 episodes counted under the run's commit
+        JsonNode byCommit = provenance.get("episodes_by_commit");
+        assertEquals(1, byCommit.size(), byCommit.toString());
+        assertEquals(4, byCommit.get(provenance.get("commit").asText()).asInt(), byCommit.toString());
     }
 
     /** The summary without what differs between runs of the same episodes: wall time, resumed count, provenance. */

@@ -28,24 +28,32 @@ class EpisodeJournalTest {
     @Test
     void finishedEpisodesAreReadBackByTheSameRunAndACutLineIsDropped(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("r.json.episodes.jsonl");
-        EpisodeJournal first = EpisodeJournal.open(file, signature(1));
+        EpisodeJournal first = EpisodeJournal.open(file, signature(1), "c1");
         assertEquals(0, first.finished());
         first.append(2, JsonNodeFactory.instance.objectNode().put("loops", 7).put("x", 0.1 + 0.2));
         first.append(0, JsonNodeFactory.instance.objectNode().put("loops", 3));
         // a kill in the middle of the next append leaves half a line
         Files.writeString(file, "{\"index\":1,\"resu", StandardCharsets.UTF_8, StandardOpenOption.APPEND);
 
-        EpisodeJournal again = EpisodeJournal.open(file, signature(1));
+        EpisodeJournal again = EpisodeJournal.open(file, signature(1), "c1");
         assertEquals(2, again.finished());
         assertEquals(1, again.droppedLines());
         assertEquals(7, again.result(2).orElseThrow().get("loops").asInt());
         assertEquals(0.1 + 0.2, again.result(2).orElseThrow().get("x").asDouble(), 0, "a double reads back to the same bits");
         assertFalse(again.result(1).isPresent(), "the episode cut short runs again");
-        // the next append starts on a line of its own, after the cut one
-        again.append(1, JsonNodeFactory.instance.objectNode().put("loops", 5));
-        EpisodeJournal third = EpisodeJournal.open(file, signature(1));
+        // the next append starts on a line of its own, after the cut one; the run resumed by
+        // other code (commit c2) journals its episode as c2's
+        EpisodeJournal resumed = EpisodeJournal.open(file, signature(1), "c2");
+        resumed.append(1, JsonNodeFactory.instance.objectNode().put("loops", 5));
+        assertEquals(java.util.Map.of("c1", 2, "c2", 1), resumed.episodesByCommit(), "two episodes ran at c1, one at c2");
+        EpisodeJournal third = EpisodeJournal.open(file, signature(1), "c3");
         assertEquals(3, third.finished());
         assertEquals(5, third.result(1).orElseThrow().get("loops").asInt());
+        assertEquals(java.util.Map.of("c1", 2, "c2", 1), third.episodesByCommit(), "read back as they were journaled");
+        // a line without a commit counts as unrecorded
+        Files.writeString(file, "{\"index\":4,\"result\":{\"loops\":1}}\n", StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+        assertEquals(java.util.Map.of("c1", 2, "c2", 1, EpisodeJournal.UNRECORDED, 1),
+                EpisodeJournal.open(file, signature(1), "c3").episodesByCommit());
         third.delete();
         assertFalse(Files.exists(file));
     }
@@ -53,12 +61,12 @@ class EpisodeJournalTest {
     @Test
     void anotherRunsJournalIsRefusedNamingWhatDiffers(@TempDir Path dir) {
         Path file = dir.resolve("r.json.episodes.jsonl");
-        EpisodeJournal.open(file, signature(1)).append(0, JsonNodeFactory.instance.objectNode());
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, signature(2)));
+        EpisodeJournal.open(file, signature(1), "c1").append(0, JsonNodeFactory.instance.objectNode());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, signature(2), "c1"));
         assertTrue(e.getMessage().contains("seed was 1, is 2"), e.getMessage());
         ObjectNode changedConfig = signature(1);
         ((ObjectNode) changedConfig.get("files")).put("configs/sim.json", "abd");
-        e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, changedConfig));
+        e = assertThrows(IllegalArgumentException.class, () -> EpisodeJournal.open(file, changedConfig, "c1"));
         assertTrue(e.getMessage().contains("files.configs/sim.json"), e.getMessage());
     }
 }
