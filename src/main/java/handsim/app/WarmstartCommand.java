@@ -37,12 +37,17 @@ final class WarmstartCommand implements Callable<Integer> {
             description = "warm-start config, e.g. configs/train/flip-warmstart.json")
     Path config;
 
+    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set run.armRest=true "
+            + "(repeatable; dotted paths into the file)")
+    List<String> overrides = List.of();
+
     @Option(names = "--runs", paramLabel = "DIR", description = "where the run folder goes (default: runs/)")
     Path runs;
 
     @Override
     public Integer call() throws Exception {
-        Warmstart.Config c = Warmstart.Config.load(config);
+        Warmstart.Config c = Warmstart.Config.parse(Json.of(config.toString(),
+                Json.withOverrides(config.toString(), Json.load(config).node(), RunOptions.keyValues(overrides))));
         HandModel model = Wiring.model(null);
         ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), model);
         Tasks tasks = Wiring.tasks();
@@ -50,7 +55,8 @@ final class WarmstartCommand implements Callable<Integer> {
         Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
         ObjectNode run = Json.mapper().createObjectNode();
-        run.put("command", "scripts/handsim warmstart --config " + config);
+        run.put("command", "scripts/handsim warmstart --config " + config
+                + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides)));
         run.put("commit", Provenance.gitCommit());
         run.put("started", LocalDateTime.now().toString());
         Outputs.writeJson(dir.resolve("run.json"), run);

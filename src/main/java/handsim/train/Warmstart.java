@@ -55,7 +55,11 @@ public final class Warmstart {
     public record Config(Settings warmstart, TrainConfig train) {
 
         public static Config load(Path file) {
-            Json j = Json.load(file);
+            return parse(Json.load(file));
+        }
+
+        /** A warm-start config: the {@code warmstart} section, and the rest as a training config. */
+        public static Config parse(Json j) {
             Settings s = Settings.parse(j.get("warmstart"));
             ObjectNode rest = ((ObjectNode) j.node()).deepCopy();
             rest.remove("warmstart");

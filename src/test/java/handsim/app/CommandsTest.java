@@ -93,6 +93,34 @@ class CommandsTest {
     }
 
     /** Runs {@code args}, which must be refused in one line: exit code 2 and an error containing {@code expected}. */
+    @Test
+    void warmstartTakesOverridesAsTrainAndDaggerDo(@TempDir Path dir) throws Exception {
+        String config = handsim.config.Home.resolve("configs/train/flip-warmstart.json").toString();
+        // a misspelt key is named, and a refused warm start writes nothing
+        assertRefused("bogus", "warmstart", "--config", config, "--set", "run.bogus=1", "--runs", dir.toString());
+        try (var listed = Files.list(dir)) {
+            assertEquals(0, listed.count(), "nothing written by a refused warm start");
+        }
+        // a tiny warm start of the can drawn to its arm rest: two initial conditions (the fewest
+        // the actor can be fitted to), two throws tried for each, every one kept; the run's config
+        // and command carry the overrides
+        String[] overrides = {"--set", "run.armRest=true", "--set", "run.workers=1", "--set", "warmstart.initialConditions=2",
+            "--set", "warmstart.keepReward=-100", "--set", "cmaes.maxEvaluations=2", "--set", "pretrain.epochs=1"};
+        String[] args = java.util.stream.Stream.concat(java.util.stream.Stream.of("warmstart", "--config", config, "--runs", dir.toString()),
+                Arrays.stream(overrides)).toArray(String[]::new);
+        runPrinting(args);
+        Path run;
+        try (var listed = Files.list(dir)) {
+            run = listed.filter(Files::isDirectory).findFirst().orElseThrow();
+        }
+        JsonNode saved = Json.load(run.resolve("config.json")).node();
+        assertTrue(saved.at("/run/armRest").asBoolean(), saved.toString());
+        assertEquals(2, saved.at("/cmaes/maxEvaluations").asInt(), saved.toString());
+        assertTrue(Json.load(run.resolve("run.json")).node().get("command").asText()
+                .endsWith("--set run.armRest=true --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
+                        + "--set cmaes.maxEvaluations=2 --set pretrain.epochs=1"));
+    }
+
     private static void assertRefused(String expected, String... args) {
         ExportCommandTest.Result r = ExportCommandTest.run(args);
         assertEquals(2, r.code(), r.err());
