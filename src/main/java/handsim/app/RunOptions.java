@@ -41,6 +41,11 @@ final class RunOptions {
 
     /** The --config file with the --set overrides (KEY=VALUE, dotted paths into the file) applied. */
     Json configFile() {
+        return configFile(config, overrides);
+    }
+
+    /** {@code config} with {@code overrides} ({@code --set} options) applied. */
+    static Json configFile(Path config, List<String> overrides) {
         return Json.of(config.toString(), Json.withOverrides(config.toString(), Json.load(config).node(), keyValues(overrides)));
     }
 
@@ -59,10 +64,26 @@ final class RunOptions {
 
     /** What a run folder of {@code command} records about how the run was made: the command line, seed, commit, time, Java and cores. */
     ObjectNode provenance(String command, Path initActor, long seed) {
+        return provenance(commandLine(command, config, overrides) + (initActor == null ? "" : " --init-actor " + shellWord(initActor.toString())),
+                seed);
+    }
+
+    /** {@code scripts/handsim COMMAND --config CONFIG --set ...}, each word quoted for a shell where it needs it. */
+    static String commandLine(String command, Path config, List<String> overrides) {
+        StringBuilder line = new StringBuilder("scripts/handsim " + command + " --config " + shellWord(config.toString()));
+        overrides.forEach(o -> line.append(" --set ").append(shellWord(o)));
+        return line.toString();
+    }
+
+    /** A word as a POSIX shell reads it back: as is when plain, else in single quotes. */
+    static String shellWord(String word) {
+        return word.matches("[A-Za-z0-9_./=:,+@%-]+") ? word : "'" + word.replace("'", "'\\''") + "'";
+    }
+
+    /** The run folder's record of a run made by {@code commandLine}: it, the seed, commit, time, Java and cores. */
+    static ObjectNode provenance(String commandLine, long seed) {
         ObjectNode p = Json.mapper().createObjectNode();
-        p.put("command", "scripts/handsim " + command + " --config " + config
-                + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides))
-                + (initActor == null ? "" : " --init-actor " + initActor));
+        p.put("command", commandLine);
         p.put("seed", seed);
         p.put("commit", Provenance.gitCommit());
         p.put("started", LocalDateTime.now().toString());

@@ -15,7 +15,6 @@ import handsim.task.Tasks;
 import handsim.train.ThrowEnvFactory;
 import handsim.train.Warmstart;
 import java.nio.file.Path;
-import java.time.LocalDateTime;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -46,20 +45,15 @@ final class WarmstartCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        Warmstart.Config c = Warmstart.Config.parse(Json.of(config.toString(),
-                Json.withOverrides(config.toString(), Json.load(config).node(), RunOptions.keyValues(overrides))));
+        Warmstart.Config c = Warmstart.Config.parse(RunOptions.configFile(config, overrides));
         HandModel model = Wiring.model(null);
         ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), model);
         Tasks tasks = Wiring.tasks();
         double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
         Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
-        ObjectNode run = Json.mapper().createObjectNode();
-        run.put("command", "scripts/handsim warmstart --config " + config
-                + (overrides.isEmpty() ? "" : " --set " + String.join(" --set ", overrides)));
-        run.put("commit", Provenance.gitCommit());
-        run.put("started", LocalDateTime.now().toString());
-        Outputs.writeJson(dir.resolve("run.json"), run);
+        Outputs.writeJson(dir.resolve("run.json"),
+                RunOptions.provenance(RunOptions.commandLine("warmstart", config, overrides), c.train().learner().seed()));
         System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "
                 + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
                 c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());

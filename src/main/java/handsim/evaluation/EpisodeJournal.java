@@ -42,23 +42,26 @@ import java.util.Optional;
  */
 public final class EpisodeJournal {
 
-    /** Episodes this run finished itself (the others were read back). */
-    private int newlyFinished;
+    /** Episodes this run read back from the journal instead of running them. */
+    private int readBack;
 
     private static final ObjectMapper MAPPER = new ObjectMapper();
 
-    /** What an episode's line written without a commit (or by a run outside git) counts under. */
+    /** What an episode's line written without a commit counts under. */
     public static final String UNRECORDED = "unrecorded";
 
     private final Path file;
     private final String commit;
     private final Map<Integer, JsonNode> done;
+    /** The commit that ran each journaled episode. */
     private final Map<Integer, String> commits;
+    /** The commit that ran each episode this run used (read back or ran): what {@link #episodesByCommit} counts. */
+    private final Map<Integer, String> used = new HashMap<>();
     private final int droppedLines;
 
     private EpisodeJournal(Path file, String commit, Map<Integer, JsonNode> done, Map<Integer, String> commits, int droppedLines) {
         this.file = file;
-        this.commit = commit;
+        this.commit = java.util.Objects.requireNonNull(commit, "commit");
         this.done = done;
         this.commits = commits;
         this.droppedLines = droppedLines;
@@ -154,12 +157,13 @@ public final class EpisodeJournal {
     }
 
     /**
-     * How many of the journal's episodes each commit ran (those read back and those this run
-     * finished), by commit; {@link #UNRECORDED} for lines that name none.
+     * How many of the episodes this run used each commit ran (those it read back and those it
+     * ran), by commit; {@link #UNRECORDED} for lines that name none. A journal line is one
+     * rollout: an episode, or one copy's run of it for a sensitivity evaluation.
      */
     public synchronized SortedMap<String, Integer> episodesByCommit() {
         SortedMap<String, Integer> counts = new TreeMap<>();
-        commits.values().forEach(c -> counts.merge(c, 1, Integer::sum));
+        used.values().forEach(c -> counts.merge(c, 1, Integer::sum));
         return counts;
     }
 
@@ -170,7 +174,7 @@ public final class EpisodeJournal {
 
     /** Episodes this run read back from the journal instead of running them. */
     public synchronized int resumed() {
-        return done.size() - newlyFinished;
+        return readBack;
     }
 
     /**
@@ -183,13 +187,14 @@ public final class EpisodeJournal {
             return i -> {
                 Optional<JsonNode> earlier = result(i);
                 if (earlier.isPresent()) {
+                    synchronized (this) {
+                        readBack++;
+                        used.put(i, commits.get(i));
+                    }
                     return read.apply(earlier.get());
                 }
                 R result = rollout.run(i);
                 append(i, write.apply(result));
-                synchronized (this) {
-                    newlyFinished++;
-                }
                 return result;
             };
         };
@@ -233,6 +238,7 @@ public final class EpisodeJournal {
             out.force(false);
             done.put(index, result);
             commits.put(index, commit);
+            used.put(index, commit);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot append to the episode journal " + file, e);
         }

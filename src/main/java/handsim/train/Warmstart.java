@@ -54,10 +54,6 @@ public final class Warmstart {
     /** A warm-start config: the {@code warmstart} section and a training config (run and learner sections). */
     public record Config(Settings warmstart, TrainConfig train) {
 
-        public static Config load(Path file) {
-            return parse(Json.load(file));
-        }
-
         /** A warm-start config: the {@code warmstart} section, and the rest as a training config. */
         public static Config parse(Json j) {
             Settings s = Settings.parse(j.get("warmstart"));

@@ -92,12 +92,13 @@ class CommandsTest {
                 "--controller", "learned", "--episodes", "1", "--opening-policy", cut.toString());
     }
 
-    /** Runs {@code args}, which must be refused in one line: exit code 2 and an error containing {@code expected}. */
     @Test
     void warmstartTakesOverridesAsTrainAndDaggerDo(@TempDir Path dir) throws Exception {
         String config = handsim.config.Home.resolve("configs/train/flip-warmstart.json").toString();
         // a misspelt key is named, and a refused warm start writes nothing
         assertRefused("bogus", "warmstart", "--config", config, "--set", "run.bogus=1", "--runs", dir.toString());
+        assertRefused("--set takes KEY=VALUE, got \"run.armRest\"", "warmstart", "--config", config, "--set", "run.armRest", "--runs",
+                dir.toString());
         try (var listed = Files.list(dir)) {
             assertEquals(0, listed.count(), "nothing written by a refused warm start");
         }
@@ -116,11 +117,14 @@ class CommandsTest {
         JsonNode saved = Json.load(run.resolve("config.json")).node();
         assertTrue(saved.at("/run/armRest").asBoolean(), saved.toString());
         assertEquals(2, saved.at("/cmaes/maxEvaluations").asInt(), saved.toString());
-        assertTrue(Json.load(run.resolve("run.json")).node().get("command").asText()
+        JsonNode record = Json.load(run.resolve("run.json")).node();
+        assertEquals(1, record.get("seed").asInt(), "the config's seed, recorded as train and dagger record theirs");
+        assertTrue(record.get("command").asText()
                 .endsWith("--set run.armRest=true --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
                         + "--set cmaes.maxEvaluations=2 --set pretrain.epochs=1"));
     }
 
+    /** Runs {@code args}, which must be refused in one line: exit code 2 and an error containing {@code expected}. */
     private static void assertRefused(String expected, String... args) {
         ExportCommandTest.Result r = ExportCommandTest.run(args);
         assertEquals(2, r.code(), r.err());

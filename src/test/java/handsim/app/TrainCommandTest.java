@@ -33,4 +33,13 @@ class TrainCommandTest {
         assertTrue(resting.armRest().isPresent(), "run.armRest true: the task's arm rest (configs/tasks/flip.json)");
         assertEquals(shipped.catchAfterThrow(), resting.catchAfterThrow(), "the catch stays the run's");
     }
+
+    @Test
+    void aRunRecordsACommandLineAShellReadsBack() {
+        // plain words as they are; a JSON value and a quote inside single quotes (POSIX sh)
+        assertEquals("scripts/handsim train --config configs/train/flip.json --set run.armRest=true "
+                + "--set 'run.catch={\"planeShift\": 0}' --set 'run.name=it'\\''s'",
+                RunOptions.commandLine("train", java.nio.file.Path.of("configs/train/flip.json"),
+                        java.util.List.of("run.armRest=true", "run.catch={\"planeShift\": 0}", "run.name=it's")));
+    }
 }
