@@ -37,7 +37,8 @@ public final class Warmstart {
     /**
      * The {@code warmstart} section of a warm-start config.
      *
-     * @param initialConditions how many initial conditions (episode seeds firstSeed, firstSeed + 1, ...)
+     * @param initialConditions how many initial conditions (episode seeds firstSeed, firstSeed + 1, ...);
+     *     at least 2, the fewest examples the actor's fit takes ({@link handsim.learn.ActorPretraining})
      * @param firstSeed the first episode seed
      * @param keepReward a searched throw becomes an example when its reward is at least this
      */
@@ -45,7 +46,7 @@ public final class Warmstart {
 
         static Settings parse(Json j) {
             j.allow("comment");
-            Settings s = new Settings(j.integer("initialConditions", 1, 100000), j.longValue("firstSeed"), j.number("keepReward"));
+            Settings s = new Settings(j.integer("initialConditions", 2, 100000), j.longValue("firstSeed"), j.number("keepReward"));
             j.requireNoUnknownFields();
             return s;
         }

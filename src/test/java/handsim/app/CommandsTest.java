@@ -99,6 +99,9 @@ class CommandsTest {
         assertRefused("bogus", "warmstart", "--config", config, "--set", "run.bogus=1", "--runs", dir.toString());
         assertRefused("--set takes KEY=VALUE, got \"run.armRest\"", "warmstart", "--config", config, "--set", "run.armRest", "--runs",
                 dir.toString());
+        // one initial condition can never give the 2 examples a fit needs: refused before the search
+        assertRefused("initialConditions", "warmstart", "--config", config, "--set", "warmstart.initialConditions=1", "--runs",
+                dir.toString());
         try (var listed = Files.list(dir)) {
             assertEquals(0, listed.count(), "nothing written by a refused warm start");
         }
