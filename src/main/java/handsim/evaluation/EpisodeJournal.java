@@ -3,7 +3,6 @@ package handsim.evaluation;
 import handsim.config.Home;
 import handsim.config.ReadLog;
 import handsim.rollout.RolloutTask;
-import java.util.List;
 import java.util.SortedMap;
 import java.util.TreeMap;
 import java.util.function.Function;
@@ -24,6 +23,8 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Set;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
@@ -52,18 +53,19 @@ public final class EpisodeJournal {
 
     private final Path file;
     private final String commit;
-    private final Map<Integer, JsonNode> done;
-    /** The commit that ran each journaled episode. */
-    private final Map<Integer, String> commits;
-    /** The commit that ran each episode this run used (read back or ran): what {@link #episodesByCommit} counts. */
-    private final Map<Integer, String> used = new HashMap<>();
+    /** A journaled episode: its result and the commit that ran it. */
+    private record Entry(JsonNode result, String commit) {
+    }
+
+    private final Map<Integer, Entry> done;
+    /** The episodes this run used (read back or ran): what {@link #episodesByCommit} counts. */
+    private final Set<Integer> used = new HashSet<>();
     private final int droppedLines;
 
-    private EpisodeJournal(Path file, String commit, Map<Integer, JsonNode> done, Map<Integer, String> commits, int droppedLines) {
+    private EpisodeJournal(Path file, String commit, Map<Integer, Entry> done, int droppedLines) {
         this.file = file;
         this.commit = java.util.Objects.requireNonNull(commit, "commit");
         this.done = done;
-        this.commits = commits;
         this.droppedLines = droppedLines;
     }
 
@@ -77,7 +79,7 @@ public final class EpisodeJournal {
             if (!Files.exists(file)) {
                 Files.createDirectories(file.toAbsolutePath().getParent());
                 Outputs.writeString(file, MAPPER.writeValueAsString(header(signature)) + "\n");
-                return new EpisodeJournal(file, commit, new HashMap<>(), new HashMap<>(), 0);
+                return new EpisodeJournal(file, commit, new HashMap<>(), 0);
             }
             List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
             JsonNode head = lines.isEmpty() ? null : parse(lines.get(0)).orElse(null);
@@ -90,20 +92,18 @@ public final class EpisodeJournal {
                 throw new IllegalArgumentException(file + " holds the finished episodes of another run (" + differs
                         + "): delete it to start afresh, or write the results elsewhere");
             }
-            Map<Integer, JsonNode> done = new HashMap<>();
-            Map<Integer, String> commits = new HashMap<>();
+            Map<Integer, Entry> done = new HashMap<>();
             int dropped = 0;
             for (String line : lines.subList(1, lines.size())) {
                 Optional<JsonNode> entry = parse(line);
                 if (entry.isPresent() && entry.get().has("index") && entry.get().has("result")) {
-                    int index = entry.get().get("index").asInt();
-                    done.put(index, entry.get().get("result"));
-                    commits.put(index, entry.get().path("commit").asText(UNRECORDED));
+                    done.put(entry.get().get("index").asInt(),
+                            new Entry(entry.get().get("result"), entry.get().path("commit").asText(UNRECORDED)));
                 } else {
                     dropped++; // a write cut short by a kill
                 }
             }
-            return new EpisodeJournal(file, commit, done, commits, dropped);
+            return new EpisodeJournal(file, commit, done, dropped);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot use the episode journal " + file, e);
         }
@@ -153,7 +153,7 @@ public final class EpisodeJournal {
 
     /** The result journaled for episode {@code index}, if an interrupted run of the same command finished it. */
     public synchronized Optional<JsonNode> result(int index) {
-        return Optional.ofNullable(done.get(index));
+        return Optional.ofNullable(done.get(index)).map(Entry::result);
     }
 
     /**
@@ -163,7 +163,7 @@ public final class EpisodeJournal {
      */
     public synchronized SortedMap<String, Integer> episodesByCommit() {
         SortedMap<String, Integer> counts = new TreeMap<>();
-        used.values().forEach(c -> counts.merge(c, 1, Integer::sum));
+        used.forEach(i -> counts.merge(done.get(i).commit(), 1, Integer::sum));
         return counts;
     }
 
@@ -189,7 +189,7 @@ public final class EpisodeJournal {
                 if (earlier.isPresent()) {
                     synchronized (this) {
                         readBack++;
-                        used.put(i, commits.get(i));
+                        used.add(i);
                     }
                     return read.apply(earlier.get());
                 }
@@ -236,9 +236,8 @@ public final class EpisodeJournal {
                     .getBytes(StandardCharsets.UTF_8);
             out.write(java.nio.ByteBuffer.wrap(line));
             out.force(false);
-            done.put(index, result);
-            commits.put(index, commit);
-            used.put(index, commit);
+            done.put(index, new Entry(result, commit));
+            used.add(index);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot append to the episode journal " + file, e);
         }
