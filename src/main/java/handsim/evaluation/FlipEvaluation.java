@@ -171,6 +171,13 @@ final class FlipEvaluation extends TaskEvaluation {
         for (FlipTask.AngleBin b : byHeading) {
             putBin(firstByHeading, b.from(), b.to(), b.throwsMade(), b.successes());
         }
+        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(runs.stream().map(FlipRun::loops).toList());
+        ArrayNode laterByRest = out.putArray("later_throws_by_rest");
+        for (FlipTask.RestCount c : byRest) {
+            laterByRest.addObject().put("rest", c.rest().label()).put("early_throws", c.earlyThrows())
+                    .put("early_successes", c.earlySuccesses()).put("later_throws", c.laterThrows())
+                    .put("later_successes", c.laterSuccesses());
+        }
         List<FlipTask.AngleBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.AngleBin b : bins) {
@@ -204,6 +211,11 @@ final class FlipEvaluation extends TaskEvaluation {
         console.println("first throws by the heading the throw-in came to rest at (0 across the palm, 90 along the fingers): "
                 + byHeading.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d of %d", Math.toDegrees(b.from()),
                         Math.toDegrees(b.to()), b.successes(), b.throwsMade())).collect(Collectors.joining("; ")));
+        console.println(String.format(Locale.ROOT, "throws after the first by how the catch before them left the %s (flat: under "
+                + "%.0f deg out of the palm's plane; askew: %.0f deg or more from across it), throws 2-%d / from the %dth: ", object,
+                Math.toDegrees(FlipTask.FLAT_REST), Math.toDegrees(FlipTask.ASKEW_REST), FlipTask.EARLY_THROWS, FlipTask.EARLY_THROWS + 1)
+                + byRest.stream().map(c -> String.format(Locale.ROOT, "%s %d of %d / %d of %d", c.rest().label().replace('_', ' '),
+                        c.earlySuccesses(), c.earlyThrows(), c.laterSuccesses(), c.laterThrows())).collect(Collectors.joining("; ")));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))

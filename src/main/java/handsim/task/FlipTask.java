@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 
@@ -306,6 +307,70 @@ public final class FlipTask implements ThrowTask {
         List<AngleBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {
             out.add(new AngleBin(b * ANGLE_BIN, (b + 1) * ANGLE_BIN, made[b], succeeded[b]));
+        }
+        return out;
+    }
+
+    /** A rest this far or less out of the palm's plane lies flat (docs/experiments.md, What a throw fails from). */
+    public static final double FLAT_REST = Math.toRadians(10);
+    /** A rest this far or more from across the palm lies askew. */
+    public static final double ASKEW_REST = Math.toRadians(5);
+    /** Throws 2 to this one are the loop's early throws, made while the can's rests settle. */
+    public static final int EARLY_THROWS = 5;
+
+    /** How a long object lay in the hand when the catch before a throw was judged: raised or flat, across or askew. */
+    public enum Rest {
+        RAISED_ACROSS, RAISED_ASKEW, FLAT_ACROSS, FLAT_ASKEW;
+
+        /** The rest of a catch's {@link LoopRecord#catchTilt} and {@link LoopRecord#catchHeading}. */
+        public static Rest of(double tilt, double heading) {
+            boolean flat = tilt < FLAT_REST, askew = heading >= ASKEW_REST;
+            return flat ? (askew ? FLAT_ASKEW : FLAT_ACROSS) : (askew ? RAISED_ASKEW : RAISED_ACROSS);
+        }
+
+        public String label() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
+    /**
+     * Throws made from a {@code rest} left by the hand's own catch, early (throws 2 to {@link
+     * #EARLY_THROWS}) and from the next one on, and how many of each were successes of the task.
+     */
+    public record RestCount(Rest rest, int earlyThrows, int earlySuccesses, int laterThrows, int laterSuccesses) {
+    }
+
+    /**
+     * The throws after each episode's first (from its second on) by how the catch before them
+     * left the object ({@link Rest}), all four rests: where in the hand a policy throws badly
+     * from. Throws after a catch with no measured tilt or heading are left out.
+     *
+     * @param episodes each episode's loops, the throw-in first
+     */
+    public List<RestCount> laterThrowsByRest(List<List<LoopRecord>> episodes) {
+        int n = Rest.values().length;
+        int[] early = new int[n], earlyOk = new int[n], later = new int[n], laterOk = new int[n];
+        for (List<LoopRecord> loops : episodes) {
+            for (int i = 2; i < loops.size(); i++) {
+                LoopRecord before = loops.get(i - 1);
+                if (!Double.isFinite(before.catchTilt()) || !Double.isFinite(before.catchHeading())) {
+                    continue;
+                }
+                int r = Rest.of(before.catchTilt(), before.catchHeading()).ordinal();
+                boolean ok = success(loops.get(i));
+                if (i <= EARLY_THROWS) {
+                    early[r]++;
+                    earlyOk[r] += ok ? 1 : 0;
+                } else {
+                    later[r]++;
+                    laterOk[r] += ok ? 1 : 0;
+                }
+            }
+        }
+        List<RestCount> out = new ArrayList<>();
+        for (Rest r : Rest.values()) {
+            int k = r.ordinal();
+            out.add(new RestCount(r, early[k], earlyOk[k], later[k], laterOk[k]));
         }
         return out;
     }

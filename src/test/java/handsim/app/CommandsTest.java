@@ -274,6 +274,17 @@ class CommandsTest {
         }
         assertEquals(first.get("throws").asInt(), binnedFirst, summary.toString());
         assertEquals(first.get("successes").asInt(), binnedFirstSuccesses, summary.toString());
+        // the throws after the first, by the rest before them, are the later throws (a can's rest is
+        // always measured after a catch that held it, and no throw follows one that did not)
+        int byRest = 0, byRestSuccesses = 0;
+        for (JsonNode c : summary.get("later_throws_by_rest")) {
+            byRest += c.get("early_throws").asInt() + c.get("later_throws").asInt();
+            byRestSuccesses += c.get("early_successes").asInt() + c.get("later_successes").asInt();
+        }
+        assertEquals(4, summary.get("later_throws_by_rest").size(), summary.toString());
+        assertEquals(later.get("throws").asInt(), byRest, summary.toString());
+        assertEquals(later.get("successes").asInt(), byRestSuccesses, summary.toString());
+        assertTrue(text.contains("throws after the first by how the catch before them left the can"), text);
         assertTrue(text.contains("per throw (paper's method)"), text);
     }
 

@@ -146,6 +146,33 @@ class FlipTaskTest {
         assertArrayEquals(new int[] {1, 0, 0, 1, 0, 0}, succeeded);
     }
 
+    @Test
+    void laterThrowsAreCountedByTheRestTheCatchBeforeThemLeft() {
+        // flat: under 10 deg out of the palm's plane; askew: 5 deg or more from across the palm
+        // (FlipTask.FLAT_REST, ASKEW_REST); throws 2-5 are early, from the 6th later; the first
+        // throw (from the throw-in) is not counted, nor a throw after a catch with no tilt measured
+        LoopRecord raisedAcross = caughtResting(15, 2), flatAskew = caughtResting(5, 8), flatAcross = caughtResting(9.9, 4.9),
+                raisedAskew = caughtResting(10, 5), dropped = flight(180, false, target), failed = flight(90, true, target, 10);
+        List<LoopRecord> episode = List.of(restingAt(0), raisedAcross, flatAskew, failed);
+        List<LoopRecord> longer = List.of(restingAt(0), flatAskew, raisedAcross, dropped, raisedAskew, flatAcross, flatAskew,
+                raisedAcross);
+        List<FlipTask.RestCount> counts = can.laterThrowsByRest(List.of(episode, longer));
+        assertEquals(List.of(FlipTask.Rest.values()), counts.stream().map(FlipTask.RestCount::rest).toList(), "all four rests, in order");
+        // episode: throw 2 from raised-across succeeds, throw 3 from flat-askew fails (no flip);
+        // longer: throw 2 from flat-askew succeeds, 3 from raised-across is dropped, 4 follows the drop
+        // (no rest: left out), 5 from raised-askew (10 deg is not flat, 5 deg is askew) succeeds,
+        // 6 from flat-across (9.9, 4.9 deg) and 7 from flat-askew succeed as later throws
+        assertEquals(List.of(new FlipTask.RestCount(FlipTask.Rest.RAISED_ACROSS, 2, 1, 0, 0),
+                new FlipTask.RestCount(FlipTask.Rest.RAISED_ASKEW, 1, 1, 0, 0), new FlipTask.RestCount(FlipTask.Rest.FLAT_ACROSS, 0, 0, 1, 1),
+                new FlipTask.RestCount(FlipTask.Rest.FLAT_ASKEW, 2, 1, 1, 1)), counts);
+    }
+
+    /** A flip caught and resting {@code tiltDeg} out of the palm's plane, {@code headingDeg} from across it. */
+    private LoopRecord caughtResting(double tiltDeg, double headingDeg) {
+        return new LoopRecord(1, true, 1.3, null, Double.NaN, null, false, Double.NaN, Math.PI, Double.NaN, Math.toRadians(tiltDeg),
+                Math.toRadians(headingDeg), target, Double.NaN, 0, 0, 0, 1);
+    }
+
     /** A caught throw-in resting at {@code headingDeg} in the palm (NaN: dropped). */
     private static LoopRecord restingAt(double headingDeg) {
         return new LoopRecord(0, !Double.isNaN(headingDeg), Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
