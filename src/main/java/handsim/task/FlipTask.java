@@ -311,7 +311,7 @@ public final class FlipTask implements ThrowTask {
         return out;
     }
 
-    /** A rest this far or less out of the palm's plane lies flat (docs/experiments.md, What a throw fails from). */
+    /** A rest less than this far out of the palm's plane lies flat (docs/experiments.md, What a throw fails from). */
     public static final double FLAT_REST = Math.toRadians(10);
     /** A rest this far or more from across the palm lies askew. */
     public static final double ASKEW_REST = Math.toRadians(5);
