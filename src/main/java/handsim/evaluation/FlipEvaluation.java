@@ -160,18 +160,19 @@ final class FlipEvaluation extends TaskEvaluation {
         for (FlipEnd end : FlipEnd.values()) {
             endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
         }
-        List<LoopRecord> allLoops = runs.stream().flatMap(r -> r.loops().stream()).toList();
+        List<List<LoopRecord>> episodeLoops = runs.stream().map(FlipRun::loops).toList();
+        List<LoopRecord> allLoops = episodeLoops.stream().flatMap(List::stream).toList();
         FlipTask.ThrowTally tally = flipTask.tally(allLoops);
         // each episode's first throw, made from the caught throw-in, and those made from the hand's own catches
         FlipTask.ThrowTally first = flipTask.tally(allLoops.stream().filter(l -> l.index() == 1).toList());
         FlipTask.ThrowTally later = flipTask.tally(allLoops.stream().filter(l -> l.index() > 1).toList());
         putPerThrow(out, tally, first, later);
-        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(runs.stream().map(FlipRun::loops).toList());
+        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(episodeLoops);
         ArrayNode firstByHeading = out.putArray("first_throws_by_rest_heading");
         for (FlipTask.AngleBin b : byHeading) {
             putBin(firstByHeading, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(runs.stream().map(FlipRun::loops).toList());
+        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(episodeLoops);
         ArrayNode laterByRest = out.putArray("later_throws_by_rest");
         for (FlipTask.RestCount c : byRest) {
             laterByRest.addObject().put("rest", c.rest().label()).put("early_throws", c.earlyThrows())
