@@ -24,11 +24,12 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.Set;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * The finished episodes of a long evaluation, one JSON line each, appended and flushed to disk
@@ -64,7 +65,7 @@ public final class EpisodeJournal {
 
     private EpisodeJournal(Path file, String commit, Map<Integer, Entry> done, int droppedLines) {
         this.file = file;
-        this.commit = java.util.Objects.requireNonNull(commit, "commit");
+        this.commit = Objects.requireNonNull(commit, "commit");
         this.done = done;
         this.droppedLines = droppedLines;
     }
