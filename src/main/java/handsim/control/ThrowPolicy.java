@@ -35,4 +35,23 @@ public interface ThrowPolicy {
             }
         };
     }
+
+    /**
+     * {@code special} for the throws after the first whose decision {@code where} accepts (a rest
+     * of the object in the hand that this policy throws badly from), this policy otherwise.
+     */
+    default ThrowPolicy withSpecialAt(java.util.function.Predicate<Observation> where, ThrowPolicy special) {
+        ThrowPolicy usual = this;
+        return new ThrowPolicy() {
+            @Override
+            public ThrowParameters decide(Observation observation) {
+                return usual.decide(observation);
+            }
+
+            @Override
+            public ThrowParameters decide(Observation observation, int throwIndex) {
+                return throwIndex > 1 && where.test(observation) ? special.decide(observation) : usual.decide(observation, throwIndex);
+            }
+        };
+    }
 }

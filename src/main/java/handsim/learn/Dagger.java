@@ -114,13 +114,14 @@ public final class Dagger {
     /**
      * Plays one episode on {@code env}: at each decision the actor proposes (clipped to [-1, 1]),
      * the teacher labels, and the episode goes on with the label (when the request says so and the
-     * teacher found one) or the proposal, until the environment ends it or the cut-off.
+     * teacher found one) or the proposal, until the environment ends it or the cut-off (no
+     * decision at all when the environment's reset finds none, {@link TeachableEnv#reset}).
      */
     public static Episode play(TeachableEnv env, Request req, Function<double[], double[]> actor) {
         double[] obs = env.reset(req.envSeed());
         Rng labelSeeds = new Rng(req.labelSeed());
         List<Visit> visits = new ArrayList<>();
-        for (int d = 0; d < req.maxDecisions(); d++) {
+        for (int d = 0; obs != null && d < req.maxDecisions(); d++) {
             double[] proposal = clip(actor.apply(obs));
             Demonstration label = env.label(proposal, labelSeeds.nextLong());
             visits.add(new Visit(obs, proposal, label));

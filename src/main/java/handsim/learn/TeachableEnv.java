@@ -9,6 +9,13 @@ package handsim.learn;
 public interface TeachableEnv extends Env {
 
     /**
+     * As {@link Env#reset}, or null when the episode of {@code seed} ends before any decision the
+     * learner makes (an environment that leads in to the learner's decisions by other means).
+     */
+    @Override
+    double[] reset(long seed);
+
+    /**
      * The teacher's label for the decision the environment waits at; {@code seed} seeds the
      * teacher's search, so that the same state, proposal and seed give the same label.
      */

@@ -347,10 +347,9 @@ public final class CatchThrowEpisode {
             state.loop.landing = obs.object().position();
             state.status = Status.DROPPED;
         } else if (longAxis != null) {
-            Vec3 axis = obs.object().orientation().rotate(longAxis); // unit: ObjectSpec normalises it
-            state.loop.catchTilt = Math.asin(Math.min(1, Math.abs(axis.dot(obs.palm().rotation().yAxis())))); // palm y: its normal
-            Vec3 inPalm = obs.palm().rotation().inverseRotate(axis);
-            state.loop.catchHeading = Math.atan2(Math.abs(inPalm.x()), Math.abs(inPalm.z())); // palm z: across the palm
+            LyingPose pose = LyingPose.of(obs.palm(), obs.object().orientation().rotate(longAxis)); // unit: ObjectSpec normalises it
+            state.loop.catchTilt = pose.tilt();
+            state.loop.catchHeading = pose.heading();
         }
         return finishLoop(held);
     }

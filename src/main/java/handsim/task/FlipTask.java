@@ -5,6 +5,7 @@ import handsim.control.ArmRest;
 import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
+import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
@@ -328,8 +329,28 @@ public final class FlipTask implements ThrowTask {
             return flat ? (askew ? FLAT_ASKEW : FLAT_ACROSS) : (askew ? RAISED_ASKEW : RAISED_ACROSS);
         }
 
+        /**
+         * The rest of an object with long axis {@code longAxis} (body frame, unit) as {@code at}
+         * sees it: at a throw's decision, made in the tick the catch is judged, the rest that
+         * catch's {@link LoopRecord} records.
+         */
+        public static Rest at(Observation at, Vec3 longAxis) {
+            LyingPose pose = LyingPose.of(at.palm(), at.object().orientation().rotate(longAxis));
+            return of(pose.tilt(), pose.heading());
+        }
+
         public String label() {
             return name().toLowerCase(Locale.ROOT);
+        }
+
+        /** The rest named by {@link #label}; an unknown name is refused with the names there are. */
+        public static Rest ofLabel(String label) {
+            for (Rest r : values()) {
+                if (r.label().equals(label)) {
+                    return r;
+                }
+            }
+            throw new IllegalArgumentException("no rest \"" + label + "\" (one of " + Arrays.stream(values()).map(Rest::label).toList() + ")");
         }
     }
 

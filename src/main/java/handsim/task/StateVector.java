@@ -127,6 +127,11 @@ public final class StateVector {
         return encoding;
     }
 
+    /** The hand's sizes this state describes (null unless the encoding is {@link Encoding#handSized}). */
+    public Hand hand() {
+        return hand;
+    }
+
     /** Entries of the state with a goal of {@code goalSize} entries. */
     public int size(int goalSize) {
         return baseSize() + goalSize;

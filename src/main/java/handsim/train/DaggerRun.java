@@ -3,13 +3,17 @@ package handsim.train;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
+import handsim.control.ThrowPolicy;
 import handsim.learn.Dagger;
 import handsim.learn.DemonstrationSet;
 import handsim.learn.Policy;
+import handsim.math.Vec3;
 import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
 import handsim.evaluation.ThrowTeacher;
+import handsim.task.FlipTask;
+import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -88,6 +92,7 @@ public final class DaggerRun {
         if (initPolicy != null) {
             ThrowPolicyFile.initActor(initPolicy, envs); // refused before the folder is written
         }
+        gate(config.learnerThrows(), envs.tasks().get(), envs); // lead-in policies for another task or object too
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), configFile.node());
         Outputs.writeJson(dir.resolve(RUN_JSON), provenance);
@@ -142,8 +147,9 @@ public final class DaggerRun {
                     TeachableThrowEnv env = workers.computeIfAbsent(sim, s -> {
                         Simulator twin = twins.apply(s);
                         twinSims.add(twin);
-                        return new TeachableThrowEnv(envs.create(s), new ThrowTeacher(config.teacher(), envs.tasks().get(),
-                                envs.space(), twin));
+                        ThrowEnv throwEnv = envs.create(s);
+                        return new TeachableThrowEnv(throwEnv, new ThrowTeacher(config.teacher(), envs.tasks().get(),
+                                envs.space(), twin), gate(config.learnerThrows(), throwEnv.task(), envs));
                     });
                     return i -> {
                         Dagger.Request req = requests.get(i);
@@ -175,6 +181,21 @@ public final class DaggerRun {
             twinSims.forEach(Simulator::close);
         }
         out.println("wrote " + dir.resolve(POLICY) + ", " + ROUNDS + ", " + DEMONSTRATIONS);
+    }
+
+    /**
+     * The decisions the learner makes in an environment playing {@code task}: all (null) without
+     * {@code throwsOf}, else those from its rest, the lead-in policies throwing the others.
+     */
+    private static TeachableThrowEnv.Gate gate(DaggerRunConfig.LearnerThrows throwsOf, ThrowTask task, ThrowEnvFactory envs) {
+        if (throwsOf == null) {
+            return null;
+        }
+        Vec3 axis = envs.object().longAxis().orElseThrow(() -> new IllegalArgumentException(
+                "learnerThrows: the " + envs.object().name() + " has no long axis to rest along"));
+        ThrowPolicy leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), task, envs.object(),
+                envs.state().hand());
+        return new TeachableThrowEnv.Gate(obs -> FlipTask.Rest.at(obs, axis) == throwsOf.rest(), leadIn, throwsOf.maxLoops());
     }
 
     /** Round 0's learner when the run started from a policy, else null (the nominal throw). */

@@ -1,22 +1,43 @@
 package handsim.train;
 
+import handsim.control.Observation;
+import handsim.control.ThrowPolicy;
 import handsim.learn.Demonstration;
 import handsim.learn.TeachableEnv;
 import handsim.evaluation.ThrowTeacher;
+import handsim.task.CatchThrowEpisode;
+import java.util.function.Predicate;
 
 /**
  * A {@link ThrowEnv} whose decisions a {@link ThrowTeacher} labels: the teacher plays throws in
  * a twin world from the decision the environment waits at and answers with the nearest that
- * works (DAgger's expert).
+ * works (DAgger's expert). With a {@link Gate} the environment waits only at the decisions the
+ * gate lets through and throws the others itself with the gate's lead-in policy.
  */
 public final class TeachableThrowEnv implements TeachableEnv {
 
+    /**
+     * Which decisions are the learner's: the throws after the first whose decision {@code
+     * learnerThrows} accepts; the others are thrown by {@code leadIn} (given the throw's index,
+     * {@link ThrowPolicy#decide(Observation, int)}), and an episode is cut off (truncated) at the
+     * lead-in's throw number {@code maxLoops}.
+     */
+    public record Gate(Predicate<Observation> learnerThrows, ThrowPolicy leadIn, int maxLoops) {
+    }
+
     private final ThrowEnv env;
     private final ThrowTeacher teacher;
+    private final Gate gate;
 
     public TeachableThrowEnv(ThrowEnv env, ThrowTeacher teacher) {
+        this(env, teacher, null);
+    }
+
+    /** @param gate the decisions the learner makes, or null for all */
+    public TeachableThrowEnv(ThrowEnv env, ThrowTeacher teacher, Gate gate) {
         this.env = env;
         this.teacher = teacher;
+        this.gate = gate;
     }
 
     @Override
@@ -29,14 +50,35 @@ public final class TeachableThrowEnv implements TeachableEnv {
         return env.actionSize();
     }
 
+    /** The first decision of the episode of {@code seed} that is the learner's, or null if the episode ends before one. */
     @Override
     public double[] reset(long seed) {
-        return env.reset(seed);
+        double[] obs = env.reset(seed);
+        Step led = leadInToLearner(new Step(obs, 0, false, false));
+        return led.done() ? null : led.observation();
     }
 
     @Override
     public Step step(double[] action) {
-        return env.step(action);
+        Step s = env.step(action);
+        Step led = leadInToLearner(s);
+        return led == s ? s : new Step(led.observation(), s.reward(), led.terminal(), led.truncated()); // the learner's throw's reward
+    }
+
+    /** From {@code s}, the lead-in's throws up to the learner's next decision or the episode's end. */
+    private Step leadInToLearner(Step s) {
+        while (gate != null && !s.done()) {
+            CatchThrowEpisode episode = env.episode();
+            int throwIndex = episode.loops().size();
+            if (throwIndex > 1 && gate.learnerThrows().test(episode.decision())) {
+                return s;
+            }
+            if (throwIndex >= gate.maxLoops()) {
+                return new Step(s.observation(), s.reward(), true, true);
+            }
+            s = env.throwWith(gate.leadIn().decide(episode.decision(), throwIndex));
+        }
+        return s;
     }
 
     @Override

@@ -99,12 +99,17 @@ public final class ThrowEnv implements Env {
 
     @Override
     public Step step(double[] action) {
+        return throwWith(space.fromAction(action));
+    }
+
+    /** {@link #step} with the throw's parameters themselves (not an action mapped onto the throw box). */
+    public Step throwWith(ThrowParameters parameters) {
         if (episode == null || episode.status() != CatchThrowEpisode.Status.RUNNING) {
             throw new IllegalStateException("step() needs a running episode: call reset() first");
         }
         Observation next;
         try {
-            episode.decide(ThrowDecision.of(space.fromAction(action)));
+            episode.decide(ThrowDecision.of(parameters));
             next = episode.advanceToDecision();
         } catch (SimulationDiverged e) {
             diverged++;
@@ -119,6 +124,11 @@ public final class ThrowEnv implements Env {
         }
         state = stateVector.encode(next, task.goal());
         return new Step(state.clone(), reward, false, false);
+    }
+
+    /** The task the episodes play (its goals are drawn at each reset). */
+    public ThrowTask task() {
+        return task;
     }
 
     /** The episode being played (for inspection). */
