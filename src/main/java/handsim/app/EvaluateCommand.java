@@ -55,6 +55,12 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     EpisodeOptions episodeOptions;
 
+    @Option(names = "--rest-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for the throws after the first made from the rest of the object in "
+                    + "the hand it was trained for (its provenance's config.learnerThrows.rest) (default: with the shipped policy, "
+                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none)")
+    Path restPolicy;
+
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch "
             + "(default: configs/tasks/height.json evaluationThrows); flip: the most flip-and-catch loops an episode runs to "
             + "(default: configs/tasks/flip.json evaluationLoops); --copies: throws per copy (default: configs/evaluation.json "
@@ -150,6 +156,8 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("policy", who.policyFile(object).toString());
             Path opening = openingFile();
             out.put("opening_policy", opening != null ? opening.toString() : null);
+            Path rest = restFile();
+            out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", object);
         out.put("seed", episodeOptions.seed);
@@ -198,16 +206,26 @@ final class EvaluateCommand implements Callable<Integer> {
         s.put("policy", policy != null ? policy.toAbsolutePath().normalize().toString() : null);
         Path opening = openingFile(); // null for the nominal controller
         s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
+        Path rest = restFile(); // null for the nominal controller
+        if (rest != null) { // absent when none, as in journals written before rest policies
+            s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
+        }
         s.put("throw_height", throwHeight);
         s.put("copies", copies);
         s.put("nudge", copies != null ? nudge : null);
         ObjectNode files = s.putObject("files");
-        EpisodeJournal.inputHashes(Arrays.asList(policy, opening, goals)).forEach(files::put);
+        EpisodeJournal.inputHashes(Arrays.asList(policy, opening, rest, goals)).forEach(files::put);
         return s;
     }
 
     private void validate() {
         who.validate();
+        if (restPolicy != null && (!task.equals("flip") || !controller.equals("learned"))) {
+            throw new IllegalArgumentException("--rest-policy goes with the flip task and --controller learned");
+        }
+        if (restPolicy != null && !Files.isRegularFile(restPolicy)) {
+            throw new IllegalArgumentException("--rest-policy: no file " + restPolicy);
+        }
         if (loops < 0 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
         }
@@ -268,6 +286,17 @@ final class EvaluateCommand implements Callable<Integer> {
         return ThrowPolicyFile.shippedOpening(task, object);
     }
 
+    /**
+     * The learned controller's policy for the throws from one rest of the object: --rest-policy;
+     * else, with the shipped policy, the rest policy shipped beside it if there is one; else null.
+     */
+    private Path restFile() {
+        if (restPolicy != null || who.policy != null || !controller.equals("learned")) {
+            return restPolicy;
+        }
+        return ThrowPolicyFile.shippedRest(task, object);
+    }
+
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
@@ -285,7 +314,9 @@ final class EvaluateCommand implements Callable<Integer> {
         // each file read once, each worker's task given its own policy
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
         ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.loadOpening(opening);
-        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
-        return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, t, spec, hand);
+        Path rest = restFile();
+        ThrowPolicyFile loadedRest = rest == null ? null : ThrowPolicyFile.loadRest(rest);
+        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, t, spec, hand);
     }
 }

@@ -63,14 +63,16 @@ final class FlipDemo {
         ObjectSpec spec = Wiring.object(object);
         Path policy = shippedPolicy(object);
         Path opening = policy == null ? null : ThrowPolicyFile.shippedOpening("flip", object);
+        Path rest = policy == null ? null : ThrowPolicyFile.shippedRest("flip", object);
         ThrowPolicy throwing = policy == null ? obs -> task.nominalThrow()
-                : ThrowPolicyFile.throwPolicy(policy, opening, task, spec, StateVector.Hand.of(Wiring.model(null)));
+                : ThrowPolicyFile.throwPolicy(policy, opening, rest, task, spec, StateVector.Hand.of(Wiring.model(null)));
         String controller = policy == null ? "nominal" : "learned";
         CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(), spec,
                 task, throwing);
         System.out.printf("handsim demo: flip task, %s, the %s controller%s%n", object, controller,
                 policy == null ? " (no flip policy ships for a " + object + ")" : " (" + Home.root().relativize(policy)
-                        + (opening == null ? "" : ", " + Home.root().relativize(opening) + " for each episode's first throw") + ", alone)");
+                        + (opening == null ? "" : ", " + Home.root().relativize(opening) + " for each episode's first throw")
+                        + (rest == null ? "" : ", " + Home.root().relativize(rest) + " for the throws from the rest it serves") + ", alone)");
         List<LoopRecord> made = new ArrayList<>();
         List<Long> seeds = new ArrayList<>();
         int episodes = 0, inARow = 0, longest = 0;

@@ -155,15 +155,18 @@ final class ShippedScenes implements SceneCatalog {
     /**
      * The learned throw policy for a setup: {@code --policy} if given (and meant for this task
      * and object), else the shipped one; each episode's first throw by {@code --opening-policy}
-     * if given (and meant for them), else, with the shipped policy, by the shipped opening; the
+     * if given (and meant for them), else, with the shipped policy, by the shipped opening; with
+     * the shipped policy, the throws from one rest by the shipped rest policy, when one ships; the
      * exception's message says why there is none.
      */
     private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
         Path file = policy;
         Path opening = this.opening != null && matches(this.opening, setup) ? this.opening : null;
+        Path rest = null;
         if (file == null || !matches(file, setup)) {
             file = ThrowPolicyFile.shipped(setup.task(), setup.object());
             opening = opening != null ? opening : ThrowPolicyFile.shippedOpening(setup.task(), setup.object());
+            rest = ThrowPolicyFile.shippedRest(setup.task(), setup.object());
             if (!Files.isRegularFile(file)) {
                 throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
                         + " (none shipped; give --policy FILE)");
@@ -173,7 +176,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.throwPolicy(file, opening, task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
+            return ThrowPolicyFile.throwPolicy(file, opening, rest, task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

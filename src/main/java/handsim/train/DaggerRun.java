@@ -193,7 +193,7 @@ public final class DaggerRun {
         }
         Vec3 axis = envs.object().longAxis().orElseThrow(() -> new IllegalArgumentException(
                 "learnerThrows: the " + envs.object().name() + " has no long axis to rest along"));
-        ThrowPolicy leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), task, envs.object(),
+        ThrowPolicy leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
                 envs.state().hand());
         return new TeachableThrowEnv.Gate(obs -> FlipTask.Rest.at(obs, axis) == throwsOf.rest(), leadIn, throwsOf.maxLoops());
     }

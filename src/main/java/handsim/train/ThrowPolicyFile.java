@@ -9,7 +9,9 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
+import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
+import handsim.task.FlipTask;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.io.IOException;
@@ -52,38 +54,87 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
     }
 
     /**
-     * The controller's throw policy for {@code task}: the policy of {@code file}, and when {@code
-     * opening} is not null, that file's policy for each episode's first throw
-     * ({@link ThrowPolicy#withOpening}). Fails as {@link #forTask} does for either file.
+     * Where handsim ships the rest policy of {@code task} with {@code object}, the one that makes
+     * the throws from one rest of the object in the hand ({@link #restServed}): {@code
+     * models/policies/<task>-<object>-rest.json}; null when none ships.
      */
-    public static ThrowPolicy throwPolicy(Path file, Path opening, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
-        return throwPolicy(load(file), opening == null ? null : loadOpening(opening), opening, task, object, hand);
+    public static Path shippedRest(String task, String object) {
+        Path file = Home.resolve("models/policies/" + task + "-" + object + "-rest.json");
+        return Files.isRegularFile(file) ? file : null;
+    }
+
+    /**
+     * The controller's throw policy for {@code task}: the policy of {@code file}; when {@code
+     * opening} is not null, that file's policy for each episode's first throw
+     * ({@link ThrowPolicy#withOpening}); when {@code rest} is not null, that file's policy for the
+     * later throws made from the rest it serves ({@link #restServed}). Fails as {@link #forTask}
+     * does for any of the files.
+     */
+    public static ThrowPolicy throwPolicy(Path file, Path opening, Path rest, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
+        return throwPolicy(load(file), opening == null ? null : loadOpening(opening), opening,
+                rest == null ? null : loadAs("rest", rest), rest, task, object, hand);
     }
 
     /** {@link #load} of an opening policy's file, an error in it named as the opening policy's. */
     public static ThrowPolicyFile loadOpening(Path file) {
+        return loadAs("opening", file);
+    }
+
+    /** {@link #load} of a rest policy's file ({@link #restServed}), an error in it named as the rest policy's. */
+    public static ThrowPolicyFile loadRest(Path file) {
+        ThrowPolicyFile f = loadAs("rest", file);
+        try {
+            f.restServed();
+        } catch (IllegalArgumentException e) {
+            throw new ConfigException("the rest policy " + file + ": " + e.getMessage(), e);
+        }
+        return f;
+    }
+
+    private static ThrowPolicyFile loadAs(String role, Path file) {
         try {
             return load(file);
         } catch (ConfigException e) {
-            throw new ConfigException("the opening policy " + e.getMessage(), e);
+            throw new ConfigException("the " + role + " policy " + e.getMessage(), e);
         }
     }
 
     /**
-     * {@link #throwPolicy(Path, Path, ThrowTask, ObjectSpec, StateVector.Hand)} from files already
-     * loaded ({@code opening} null for none), for callers that make a policy per worker;
-     * {@code openingFile} names the opening's file in an error.
+     * The rest of a long object in the hand this policy was trained to throw from: the {@code
+     * learnerThrows.rest} of its DAgger run's config ({@link DaggerRunConfig.LearnerThrows});
+     * fails when it was trained for every throw.
      */
-    public static ThrowPolicy throwPolicy(ThrowPolicyFile policy, ThrowPolicyFile opening, Path openingFile, ThrowTask task,
-            ObjectSpec object, StateVector.Hand hand) {
-        ThrowPolicy rest = policy.forTask(task, object, hand);
-        if (opening == null) {
-            return rest;
+    public FlipTask.Rest restServed() {
+        var rest = provenance.path("config").path("learnerThrows").path("rest");
+        if (!rest.isTextual()) {
+            throw new IllegalArgumentException("it was trained for every throw, not one rest (its provenance has no config.learnerThrows.rest)");
         }
+        return FlipTask.Rest.ofLabel(rest.asText());
+    }
+
+    /**
+     * {@link #throwPolicy(Path, Path, Path, ThrowTask, ObjectSpec, StateVector.Hand)} from files
+     * already loaded ({@code opening}, {@code rest} null for none), for callers that make a policy
+     * per worker; {@code openingFile} and {@code restFile} name those files in an error.
+     */
+    public static ThrowPolicy throwPolicy(ThrowPolicyFile policy, ThrowPolicyFile opening, Path openingFile, ThrowPolicyFile rest,
+            Path restFile, ThrowTask task, ObjectSpec object, StateVector.Hand hand) {
+        ThrowPolicy usual = policy.forTask(task, object, hand);
         try {
-            return ThrowPolicy.withOpening(opening.forTask(task, object, hand), rest);
+            usual = opening == null ? usual : ThrowPolicy.withOpening(opening.forTask(task, object, hand), usual);
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("the opening policy " + openingFile + ": " + e.getMessage(), e);
+        }
+        if (rest == null) {
+            return usual;
+        }
+        try {
+            FlipTask.Rest served = rest.restServed();
+            Vec3 axis = object.longAxis().orElseThrow(() -> new IllegalArgumentException("a " + object.name()
+                    + " has no long axis to rest along"));
+            return usual.withSpecialAt(obs -> FlipTask.Rest.at(obs, axis) == served, rest.forTask(task, object, hand));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("the rest policy " + restFile + ": " + e.getMessage(), e);
         }
     }
 

@@ -185,6 +185,30 @@ class CommandsTest {
                 dir.toString()), "a bad field is refused");
     }
 
+    /**
+     * A DAgger run for one rest names a bad rest or a missing lead-in policy before it writes a
+     * folder; evaluate refuses a rest policy where no learned flip is thrown and one trained for
+     * every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
+     */
+    @Test
+    void restLearnersAndRestPoliciesAreRefusedByNameWhenMisgiven(@TempDir Path dir) throws Exception {
+        String config = "configs/train/flip-flat-askew.json";
+        CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.rest=flat")
+                .assertRefused(2, "learnerThrows.rest", "\"flat\"", "flat_askew");
+        CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.leadIn=models/policies/none.json")
+                .assertRefused(2, "learnerThrows.leadIn", "none.json");
+        try (var list = Files.list(dir)) {
+            assertEquals(0, list.count(), "no run folder written");
+        }
+        String policy = "models/policies/flip-can.json";
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--rest-policy", policy)
+                .assertRefused(2, "--rest-policy", "--controller learned");
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", "none.json")
+                .assertRefused(2, "--rest-policy", "none.json");
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", policy, "--loops", "1")
+                .assertRefused(2, "rest policy", "flip-can.json", "learnerThrows.rest");
+    }
+
     @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",

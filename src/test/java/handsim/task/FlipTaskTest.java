@@ -446,4 +446,35 @@ class FlipTaskTest {
         ConfigException e = assertThrows(ConfigException.class, () -> FlipTask.Config.parse(Json.of("flip.json", root)));
         assertTrue(e.getMessage().contains("velocityFraction") && e.getMessage().contains("1.5"), e.getMessage());
     }
+
+    /**
+     * The rest read from a decision's observation: the long axis's tilt out of the palm's plane
+     * (palm y: its normal) and heading from across it (palm z), in a palm turned 30 deg about its
+     * normal so that the palm's frame, not the world's, decides; the thresholds are FLAT_REST and
+     * ASKEW_REST.
+     */
+    @Test
+    void theRestAtADecisionIsReadInThePalmsFrame() {
+        handsim.math.Quat palmTurn = handsim.math.Quat.fromAxisAngle(new Vec3(0, 1, 0), Math.toRadians(30));
+        handsim.kin.Frame palm = new handsim.kin.Frame(Vec3.ZERO, palmTurn);
+        Vec3 longAxis = new Vec3(0, 0, 1); // the can's, in its own frame
+        FlipTask.Rest[] expected = {FlipTask.Rest.FLAT_ACROSS, FlipTask.Rest.FLAT_ASKEW, FlipTask.Rest.RAISED_ACROSS,
+                FlipTask.Rest.RAISED_ASKEW};
+        double[][] tiltHeadingDeg = {{3, 2}, {3, 20}, {25, 2}, {25, 20}};
+        for (int i = 0; i < expected.length; i++) {
+            double tilt = Math.toRadians(tiltHeadingDeg[i][0]), heading = Math.toRadians(tiltHeadingDeg[i][1]);
+            // in the palm: x toward the fingers, y its normal, z across it
+            Vec3 inPalm = new Vec3(Math.cos(tilt) * Math.sin(heading), Math.sin(tilt), Math.cos(tilt) * Math.cos(heading));
+            handsim.math.Quat can = handsim.math.Quat.between(longAxis, palmTurn.rotate(inPalm));
+            handsim.control.Observation at = new handsim.control.Observation(0, new double[0], new double[0], palm, Vec3.ZERO,
+                    new handsim.sim.RigidState(Vec3.ZERO, can, Vec3.ZERO, Vec3.ZERO), 0);
+            LyingPose pose = LyingPose.of(palm, can.rotate(longAxis));
+            assertEquals(tilt, pose.tilt(), 1e-9, "tilt " + i);
+            assertEquals(heading, pose.heading(), 1e-9, "heading " + i);
+            assertEquals(expected[i], FlipTask.Rest.at(at, longAxis), "rest " + i);
+        }
+        assertEquals(FlipTask.Rest.FLAT_ASKEW, FlipTask.Rest.ofLabel("flat_askew"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> FlipTask.Rest.ofLabel("flat"));
+        assertTrue(e.getMessage().contains("\"flat\"") && e.getMessage().contains("flat_askew"), e.getMessage());
+    }
 }

@@ -79,7 +79,7 @@ class ShippedPoliciesTest {
         Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,
-                ThrowPolicyFile.throwPolicy(file, ThrowPolicyFile.shippedOpening(task, object), t, TestSupport.object(object),
+                ThrowPolicyFile.throwPolicy(file, ThrowPolicyFile.shippedOpening(task, object), ThrowPolicyFile.shippedRest(task, object), t, TestSupport.object(object),
                         handsim.task.StateVector.Hand.of(TestSupport.model())));
     }
 }
