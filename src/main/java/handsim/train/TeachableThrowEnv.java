@@ -74,7 +74,7 @@ public final class TeachableThrowEnv implements TeachableEnv {
                 return s;
             }
             if (throwIndex >= gate.maxLoops()) {
-                return new Step(s.observation(), s.reward(), true, true);
+                return new Step(s.observation(), s.reward(), false, true); // cut off, not ended
             }
             s = env.throwWith(gate.leadIn().decide(episode.decision(), throwIndex));
         }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.TestSupport;
 import handsim.config.Home;
@@ -75,6 +76,15 @@ class TeachableThrowEnvTest {
                     new TeachableThrowEnv.Gate(obs -> false, recording(env.task(), ledIn), 3));
             assertNull(gated.reset(5), "no decision is the learner's before throw 3, the cut-off");
             assertEquals(List.of(1, 2), ledIn);
+            // a learner's throw whose episode is then cut off: truncated, not ended by the task
+            List<Integer> ledIn2 = new ArrayList<>();
+            int[] gateAsked = {0};
+            TeachableThrowEnv once = new TeachableThrowEnv(env, null,
+                    new TeachableThrowEnv.Gate(obs -> ++gateAsked[0] == 1, recording(env.task(), ledIn2), 4));
+            assertNotNull(once.reset(5), "throw 2 is the learner's");
+            Env.Step s = once.step(cc.throwSpace().toAction(env.task().nominalThrow()));
+            assertEquals(List.of(1, 3), ledIn2, "throw 3 by the lead-in, then the cut-off at throw 4");
+            assertTrue(s.truncated() && !s.terminal(), "cut off: " + s);
         }
     }
 }
