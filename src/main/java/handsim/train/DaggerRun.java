@@ -35,7 +35,8 @@ import java.util.function.Function;
  * finish), {@code rounds.csv} (one row per round: the learner's throw success on the states it
  * visited, the teacher's cost, the fit), {@code policies/round-NN.json} (the actor fitted after
  * round NN, a shipped throw policy) and {@code policy.json} (the last). Round 0's learner is the
- * task's nominal throw, or the policy the run started from ({@code init-policy.json}). A run
+ * task's nominal throw, or the policy the run started from ({@code init-policy.json}); with the
+ * config's {@code learnerThrows} it makes only the throws from one rest, lead-in policies the others. A run
  * killed at any moment resumes: finished rounds are read back, and the finished episodes of the
  * round in progress are not played again.
  *
