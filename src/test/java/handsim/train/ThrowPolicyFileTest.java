@@ -1,6 +1,7 @@
 package handsim.train;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -84,5 +85,42 @@ class ThrowPolicyFileTest {
                 + "\"throwSpace\": {\"low\": [0, 0, 0, 0, 0, 0, 0], \"high\": [1, 1, 1, 1, 1, 1]}, \"provenance\": {}, \"policy\": {}}");
         ConfigException e = assertThrows(ConfigException.class, () -> ThrowPolicyFile.load(file));
         assertTrue(e.getMessage().contains("throwSpace.high"), e.getMessage());
+    }
+
+    /**
+     * A rest policy (trained by a DAgger run with learnerThrows.rest) makes the later throws from
+     * that rest and no others, read from the decision's observation (FlipTask.Rest.at); a file
+     * naming no known rest is refused as the rest policy's.
+     */
+    @Test
+    void aRestPolicyMakesTheLaterThrowsFromItsRestAlone(@TempDir Path dir) throws Exception {
+        handsim.task.ThrowTask flip = TestSupport.tasks().create("flip", "can");
+        handsim.sim.ObjectSpec can = TestSupport.object("can");
+        int n = StateVector.Encoding.CONTINUOUS.baseSize() + flip.goalSize();
+        com.fasterxml.jackson.databind.node.ObjectNode provenance = Json.mapper().createObjectNode();
+        provenance.putObject("config").putObject("learnerThrows").put("rest", "flat_askew");
+        ThrowPolicyFile usual = new ThrowPolicyFile("flip", "can", StateVector.Encoding.CONTINUOUS, flip.throwSpace(cc.throwSpace()),
+                randomActor(n, 5), Json.mapper().createObjectNode());
+        ThrowPolicyFile rest = new ThrowPolicyFile("flip", "can", StateVector.Encoding.CONTINUOUS, flip.throwSpace(cc.throwSpace()),
+                randomActor(n, 6), provenance);
+        assertEquals(handsim.task.FlipTask.Rest.FLAT_ASKEW, rest.restServed());
+        handsim.control.ThrowPolicy both = ThrowPolicyFile.throwPolicy(usual, null, null, rest, dir.resolve("rest.json"), flip, can, null);
+        handsim.math.Vec3 axis = can.longAxis().orElseThrow();
+        for (double headingDeg : new double[] {2, 20}) { // flat (3 deg out of the palm's plane), across / askew
+            double tilt = Math.toRadians(3), heading = Math.toRadians(headingDeg);
+            handsim.math.Vec3 inPalm = new handsim.math.Vec3(Math.cos(tilt) * Math.sin(heading), Math.sin(tilt),
+                    Math.cos(tilt) * Math.cos(heading));
+            handsim.control.Observation at = new handsim.control.Observation(0, new double[0], new double[0],
+                    handsim.kin.Frame.IDENTITY, handsim.math.Vec3.ZERO, new handsim.sim.RigidState(new handsim.math.Vec3(0, 0.03, 0),
+                            handsim.math.Quat.between(axis, inPalm), handsim.math.Vec3.ZERO, handsim.math.Vec3.ZERO), 0);
+            ThrowPolicyFile expected = headingDeg >= 5 ? rest : usual;
+            assertEquals(expected.forTask(flip, can).decide(at), both.decide(at, 2), "throw 2 at heading " + headingDeg);
+            assertEquals(usual.forTask(flip, can).decide(at), both.decide(at, 1), "the first throw is never the rest policy's");
+        }
+        provenance.with("config").with("learnerThrows").put("rest", "sideways");
+        new ThrowPolicyFile("flip", "can", StateVector.Encoding.CONTINUOUS, flip.throwSpace(cc.throwSpace()), randomActor(n, 6), provenance)
+                .save(dir.resolve("bad.json"));
+        ConfigException e = assertThrows(ConfigException.class, () -> ThrowPolicyFile.loadRest(dir.resolve("bad.json")));
+        assertTrue(e.getMessage().contains("rest policy") && e.getMessage().contains("sideways"), e.getMessage());
     }
 }
