@@ -58,7 +58,8 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--rest-policy", paramLabel = "FILE",
             description = "flip, learned controller: the policy for the throws after the first made from the rest of the object in "
                     + "the hand it was trained for (its provenance's config.learnerThrows.rest) (default: with the shipped policy, "
-                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none)")
+                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none); with --plan, the planner's "
+                    + "tries go on with it too")
     Path restPolicy;
 
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch "
@@ -207,7 +208,7 @@ final class EvaluateCommand implements Callable<Integer> {
         Path opening = openingFile(); // null for the nominal controller
         s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
         Path rest = restFile(); // null for the nominal controller
-        if (rest != null) { // absent when none, as in journals written before rest policies
+        if (rest != null) { // absent when none: a run without one keeps the signature it had without the option
             s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
         }
         s.put("throw_height", throwHeight);
@@ -221,7 +222,8 @@ final class EvaluateCommand implements Callable<Integer> {
     private void validate() {
         who.validate();
         if (restPolicy != null && (!task.equals("flip") || !controller.equals("learned"))) {
-            throw new IllegalArgumentException("--rest-policy goes with the flip task and --controller learned");
+            throw new IllegalArgumentException("--rest-policy goes with the flip task and --controller learned, got --task " + task
+                    + " --controller " + controller);
         }
         if (restPolicy != null && !Files.isRegularFile(restPolicy)) {
             throw new IllegalArgumentException("--rest-policy: no file " + restPolicy);

@@ -22,11 +22,11 @@ public interface ThrowPolicy {
     }
 
     /**
-     * {@code opening} for each episode's first throw and {@code rest} for every later one: the
+     * {@code opening} for each episode's first throw and {@code later} for every later one: the
      * thrown-in object rests in the hand otherwise than one the hand caught from its own throw.
      */
-    static ThrowPolicy withOpening(ThrowPolicy opening, ThrowPolicy rest) {
-        return switching(rest, (observation, throwIndex) -> throwIndex == 1, opening);
+    static ThrowPolicy withOpening(ThrowPolicy opening, ThrowPolicy later) {
+        return switching(later, (observation, throwIndex) -> throwIndex == 1, opening);
     }
 
     /**
@@ -37,7 +37,7 @@ public interface ThrowPolicy {
         return switching(this, (observation, throwIndex) -> throwIndex > 1 && where.test(observation), special);
     }
 
-    /** {@code other} at the decisions {@code useOther} accepts (given the throw number), {@code usual} at the rest and when asked without a number. */
+    /** {@code other} at the decisions {@code useOther} accepts (given the throw number), {@code usual} at all others and when asked without a number. */
     private static ThrowPolicy switching(ThrowPolicy usual, BiPredicate<Observation, Integer> useOther, ThrowPolicy other) {
         return new ThrowPolicy() {
             @Override

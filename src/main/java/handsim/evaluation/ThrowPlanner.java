@@ -313,7 +313,7 @@ public final class ThrowPlanner {
                 return new Continuation(state, t.choice(), t.next());
             }
         }
-        ThrowParameters proposal = policy.decide(state);
+        ThrowParameters proposal = policy.decide(state, twin.episode().loops().size());
         double[] centre = space.toAction(proposal);
         for (int j = 0; j < config.lookahead(); j++) {
             ThrowParameters candidate = j == 0 ? proposal : space.fromAction(TwinEpisode.vary(centre, config.rounds().get(0).spread(), rng));

@@ -36,9 +36,10 @@ import java.util.function.Function;
  * visited, the teacher's cost, the fit), {@code policies/round-NN.json} (the actor fitted after
  * round NN, a shipped throw policy) and {@code policy.json} (the last). Round 0's learner is the
  * task's nominal throw, or the policy the run started from ({@code init-policy.json}); with the
- * config's {@code learnerThrows} it makes only the throws from one rest, lead-in policies the others. A run
- * killed at any moment resumes: finished rounds are read back, and the finished episodes of the
- * round in progress are not played again.
+ * config's {@code learnerThrows} it makes only the throws from one rest, lead-in policies the
+ * others. A run killed at any moment resumes: finished rounds are read back, and the finished
+ * episodes of the round in progress are not played again (but for those that gave no decision to
+ * label, which are played again to the same end: their seeds decide them).
  *
  * <p>Each rollout worker has a twin simulator of its own for its teacher ({@code twins} makes it
  * from the worker's simulator); they are closed when the run ends.
@@ -194,8 +195,14 @@ public final class DaggerRun {
         }
         Vec3 axis = envs.object().longAxis().orElseThrow(() -> new IllegalArgumentException(
                 "learnerThrows: the " + envs.object().name() + " has no long axis to rest along"));
-        ThrowPolicy leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
-                envs.state().hand());
+        ThrowPolicy leadIn;
+        try {
+            leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
+                    envs.state().hand());
+        } catch (IllegalArgumentException e) { // ConfigException is one: a file that cannot be read
+            throw new IllegalArgumentException("learnerThrows.leadIn " + throwsOf.leadIn() + (throwsOf.leadInOpening() == null ? ""
+                    : " or leadInOpening " + throwsOf.leadInOpening()) + ": " + e.getMessage(), e);
+        }
         return new TeachableThrowEnv.Gate(obs -> FlipTask.Rest.at(obs, axis) == throwsOf.rest(), leadIn, throwsOf.maxLoops());
     }
 

@@ -22,7 +22,7 @@ public record DaggerRunConfig(TrainConfig.Run run, ThrowTeacher.Config teacher, 
      * the throws after the first made from {@code rest} ({@link FlipTask.Rest}); the others are
      * thrown by the throw policy {@code leadIn} (files as the flip task's learned controller reads
      * them: {@code leadInOpening}, when not null, for each episode's first throw), and episodes are
-     * cut off at throw number {@code maxLoops}.
+     * cut off after throw number {@code maxLoops}.
      */
     public record LearnerThrows(FlipTask.Rest rest, Path leadIn, Path leadInOpening, int maxLoops) {
 

@@ -19,8 +19,8 @@ public final class TeachableThrowEnv implements TeachableEnv {
     /**
      * Which decisions are the learner's: the throws after the first whose decision {@code
      * learnerThrows} accepts; the others are thrown by {@code leadIn} (given the throw's index,
-     * {@link ThrowPolicy#decide(Observation, int)}), and an episode is cut off (truncated) at the
-     * lead-in's throw number {@code maxLoops}.
+     * {@link ThrowPolicy#decide(Observation, int)}), and an episode is cut off (truncated) after
+     * throw number {@code maxLoops}, as evaluate's episodes are after their loop cap.
      */
     public record Gate(Predicate<Observation> learnerThrows, ThrowPolicy leadIn, int maxLoops) {
     }
@@ -70,11 +70,11 @@ public final class TeachableThrowEnv implements TeachableEnv {
         while (gate != null && !s.done()) {
             CatchThrowEpisode episode = env.episode();
             int throwIndex = episode.loops().size();
+            if (throwIndex > gate.maxLoops()) {
+                return new Step(s.observation(), s.reward(), false, true); // cut off, not ended
+            }
             if (throwIndex > 1 && gate.learnerThrows().test(episode.decision())) {
                 return s;
-            }
-            if (throwIndex >= gate.maxLoops()) {
-                return new Step(s.observation(), s.reward(), false, true); // cut off, not ended
             }
             s = env.throwWith(gate.leadIn().decide(episode.decision(), throwIndex));
         }

@@ -197,12 +197,14 @@ class CommandsTest {
                 .assertRefused(2, "learnerThrows.rest", "\"flat\"", "flat_askew");
         CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.leadIn=models/policies/none.json")
                 .assertRefused(2, "learnerThrows.leadIn", "none.json");
+        CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.leadIn=models/policies/height-sphere.json")
+                .assertRefused(2, "learnerThrows.leadIn", "height-sphere.json", "height task");
         try (var list = Files.list(dir)) {
             assertEquals(0, list.count(), "no run folder written");
         }
         String policy = "models/policies/flip-can.json";
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--rest-policy", policy)
-                .assertRefused(2, "--rest-policy", "--controller learned");
+                .assertRefused(2, "--rest-policy", "--controller learned", "got --task flip --controller nominal");
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", "none.json")
                 .assertRefused(2, "--rest-policy", "none.json");
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", policy, "--loops", "1")

@@ -29,7 +29,7 @@ class DaggerTest {
      * the edge and fails about half the time). A success goes on to a fresh state; a failure ends
      * the episode.
      */
-    static final class Window implements TeachableEnv {
+    static class Window implements TeachableEnv {
         int labels;
         private Rng rng;
         private double[] s;
@@ -100,6 +100,21 @@ class DaggerTest {
         // actor has learned the window (a 0.2-wide target in a 1.6-wide range)
         assertTrue(success.get(0) < 0.3, "the constant start: " + success);
         assertTrue(success.get(2) > 0.8, "after two rounds of aggregated labels: " + success);
+    }
+
+    /** An environment whose episode ends before any decision of the learner's (TeachableEnv#reset null) gives an episode of none. */
+    @Test
+    void anEpisodeWithoutALearnersDecisionVisitsNone() {
+        Window none = new Window() {
+            @Override
+            public double[] reset(long seed) {
+                super.reset(seed);
+                return null;
+            }
+        };
+        Dagger.Episode e = Dagger.play(none, new Dagger.Request(0, 0, 3, 4, 10, true), s -> new double[] {0});
+        assertEquals(0, e.visits().size());
+        assertEquals(0, none.labels, "the teacher was not asked");
     }
 
     @Test

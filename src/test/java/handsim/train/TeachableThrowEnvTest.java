@@ -74,8 +74,8 @@ class TeachableThrowEnvTest {
             List<Integer> ledIn = new ArrayList<>();
             TeachableThrowEnv gated = new TeachableThrowEnv(env, null,
                     new TeachableThrowEnv.Gate(obs -> false, recording(env.task(), ledIn), 3));
-            assertNull(gated.reset(5), "no decision is the learner's before throw 3, the cut-off");
-            assertEquals(List.of(1, 2), ledIn);
+            assertNull(gated.reset(5), "no decision is the learner's up to throw 3, the cut-off");
+            assertEquals(List.of(1, 2, 3), ledIn, "throws 1 to maxLoops made, as evaluate makes --loops throws");
             // a learner's throw whose episode is then cut off: truncated, not ended by the task
             List<Integer> ledIn2 = new ArrayList<>();
             int[] gateAsked = {0};
@@ -83,8 +83,9 @@ class TeachableThrowEnvTest {
                     new TeachableThrowEnv.Gate(obs -> ++gateAsked[0] == 1, recording(env.task(), ledIn2), 4));
             assertNotNull(once.reset(5), "throw 2 is the learner's");
             Env.Step s = once.step(cc.throwSpace().toAction(env.task().nominalThrow()));
-            assertEquals(List.of(1, 3), ledIn2, "throw 3 by the lead-in, then the cut-off at throw 4");
+            assertEquals(List.of(1, 3, 4), ledIn2, "throws 3 and 4 by the lead-in, then the cut-off");
             assertTrue(s.truncated() && !s.terminal(), "cut off: " + s);
+            assertEquals(env.task().reward(env.episode().loops().get(2)), s.reward(), 0, "the reward of the learner's throw, throw 2");
         }
     }
 }
