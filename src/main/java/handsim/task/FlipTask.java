@@ -9,6 +9,7 @@ import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
+import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -17,6 +18,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Predicate;
 
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from the net
@@ -337,6 +339,13 @@ public final class FlipTask implements ThrowTask {
         public static Rest at(Observation at, Vec3 longAxis) {
             LyingPose pose = LyingPose.of(at.palm(), at.object().orientation().rotate(longAxis));
             return of(pose.tilt(), pose.heading());
+        }
+
+        /** Which decisions find {@code object} resting this way ({@link #at}); refused for an object without a long axis. */
+        public Predicate<Observation> decisionsOf(ObjectSpec object) {
+            Vec3 axis = object.longAxis().orElseThrow(() -> new IllegalArgumentException("a " + object.name()
+                    + " has no long axis to rest along"));
+            return observation -> at(observation, axis) == this;
         }
 
         public String label() {

@@ -2,17 +2,16 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.learn.Dagger;
 import handsim.learn.DemonstrationSet;
 import handsim.learn.Policy;
-import handsim.math.Vec3;
 import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
 import handsim.evaluation.ThrowTeacher;
-import handsim.task.FlipTask;
 import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -27,6 +26,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Function;
+import java.util.function.Predicate;
 
 /**
  * One DAgger run of a throw task in its folder ({@code runs/dagger__<name>__<seed>__<time>/}):
@@ -193,8 +193,12 @@ public final class DaggerRun {
         if (throwsOf == null) {
             return null;
         }
-        Vec3 axis = envs.object().longAxis().orElseThrow(() -> new IllegalArgumentException(
-                "learnerThrows: the " + envs.object().name() + " has no long axis to rest along"));
+        Predicate<Observation> learnerThrows;
+        try {
+            learnerThrows = throwsOf.rest().decisionsOf(envs.object());
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("learnerThrows.rest: " + e.getMessage(), e);
+        }
         ThrowPolicy leadIn;
         try {
             leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
@@ -203,7 +207,7 @@ public final class DaggerRun {
             throw new IllegalArgumentException("learnerThrows.leadIn " + throwsOf.leadIn() + (throwsOf.leadInOpening() == null ? ""
                     : " or leadInOpening " + throwsOf.leadInOpening()) + ": " + e.getMessage(), e);
         }
-        return new TeachableThrowEnv.Gate(obs -> FlipTask.Rest.at(obs, axis) == throwsOf.rest(), leadIn, throwsOf.maxLoops());
+        return new TeachableThrowEnv.Gate(learnerThrows, leadIn, throwsOf.maxLoops());
     }
 
     /** Round 0's learner when the run started from a policy, else null (the nominal throw). */

@@ -9,7 +9,6 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
-import handsim.math.Vec3;
 import handsim.sim.ObjectSpec;
 import handsim.task.FlipTask;
 import handsim.task.StateVector;
@@ -129,10 +128,7 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
             return usual;
         }
         try {
-            FlipTask.Rest served = rest.restServed();
-            Vec3 axis = object.longAxis().orElseThrow(() -> new IllegalArgumentException("a " + object.name()
-                    + " has no long axis to rest along"));
-            return usual.withSpecialAt(obs -> FlipTask.Rest.at(obs, axis) == served, rest.forTask(task, object, hand));
+            return usual.withSpecialAt(rest.restServed().decisionsOf(object), rest.forTask(task, object, hand));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("the rest policy " + restFile + ": " + e.getMessage(), e);
         }
