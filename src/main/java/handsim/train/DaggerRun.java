@@ -37,9 +37,10 @@ import java.util.function.Predicate;
  * round NN, a shipped throw policy) and {@code policy.json} (the last). Round 0's learner is the
  * task's nominal throw, or the policy the run started from ({@code init-policy.json}); with the
  * config's {@code learnerThrows} it makes only the throws from one rest, lead-in policies the
- * others. A run killed at any moment resumes: finished rounds are read back, and the finished
- * episodes of the round in progress are not played again (but for those that gave no decision to
- * label, which are played again to the same end: their seeds decide them).
+ * others ({@code lead-in.json}, {@code lead-in-opening.json}: copies made when the run starts).
+ * A run killed at any moment resumes: finished rounds are read back, and the finished episodes
+ * of the round in progress are not played again (but for those that gave no decision to label,
+ * which are played again to the same end: their seeds decide them).
  *
  * <p>Each rollout worker has a twin simulator of its own for its teacher ({@code twins} makes it
  * from the worker's simulator); they are closed when the run ends.
@@ -53,6 +54,9 @@ public final class DaggerRun {
     public static final String POLICY = "policy.json";
     /** The policy of round 0's learner, when the run did not start from the nominal throw. */
     public static final String INIT_POLICY = "init-policy.json";
+    /** The lead-in policy files of a config's {@code learnerThrows}, as they were when the run started. */
+    public static final String LEAD_IN = "lead-in.json";
+    public static final String LEAD_IN_OPENING = "lead-in-opening.json";
 
     private static final String ROUNDS_HEADER = "round,episodes,decisions,proposal_successes,proposal_success_rate,labelled,tries,"
             + "tries_per_decision,examples,train_loss,validation_loss,round_seconds";
@@ -101,10 +105,16 @@ public final class DaggerRun {
         if (initPolicy != null) {
             Files.copy(initPolicy, dir.resolve(INIT_POLICY));
         }
+        if (config.learnerThrows() != null) {
+            Files.copy(config.learnerThrows().leadIn(), dir.resolve(LEAD_IN));
+            if (config.learnerThrows().leadInOpening() != null) {
+                Files.copy(config.learnerThrows().leadInOpening(), dir.resolve(LEAD_IN_OPENING));
+            }
+        }
         return new DaggerRun(dir, config, envs, rollouts, twins);
     }
 
-    /** Continues the run in {@code dir} with the config saved there. */
+    /** Continues the run in {@code dir} with the config saved there (and the lead-in policies copied there). */
     public static DaggerRun resume(Path dir, ThrowEnvFactory envs, Rollouts<Simulator> rollouts, Function<Simulator, Simulator> twins) {
         Path file = dir.resolve(CONFIG);
         if (!Files.isRegularFile(file)) {
@@ -151,7 +161,7 @@ public final class DaggerRun {
                         twinSims.add(twin);
                         ThrowEnv throwEnv = envs.create(s);
                         return new TeachableThrowEnv(throwEnv, new ThrowTeacher(config.teacher(), envs.tasks().get(),
-                                envs.space(), twin), gate(config.learnerThrows(), throwEnv.task(), envs));
+                                envs.space(), twin), gate(learnerThrows(), throwEnv.task(), envs));
                     });
                     return i -> {
                         Dagger.Request req = requests.get(i);
@@ -199,6 +209,12 @@ public final class DaggerRun {
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("learnerThrows.rest: " + e.getMessage(), e);
         }
+        for (Path file : new Path[] {throwsOf.leadIn(), throwsOf.leadInOpening()}) {
+            if (file != null && !Files.isRegularFile(file)) {
+                throw new IllegalArgumentException("learnerThrows." + (file == throwsOf.leadIn() ? "leadIn" : "leadInOpening")
+                        + ": no file " + file);
+            }
+        }
         ThrowPolicy leadIn;
         try {
             leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
@@ -208,6 +224,25 @@ public final class DaggerRun {
                     : " or leadInOpening " + throwsOf.leadInOpening()) + ": " + e.getMessage(), e);
         }
         return new TeachableThrowEnv.Gate(learnerThrows, leadIn, throwsOf.maxLoops());
+    }
+
+    /**
+     * The config's {@code learnerThrows} with the lead-in policies the run copied when it started
+     * (so a resumed run throws as it began, whatever became of the files the config names); a
+     * folder without the copies reads the files the config names.
+     */
+    private DaggerRunConfig.LearnerThrows learnerThrows() {
+        DaggerRunConfig.LearnerThrows t = config.learnerThrows();
+        if (t == null) {
+            return null;
+        }
+        return new DaggerRunConfig.LearnerThrows(t.rest(), copied(LEAD_IN, t.leadIn()),
+                t.leadInOpening() == null ? null : copied(LEAD_IN_OPENING, t.leadInOpening()), t.maxLoops());
+    }
+
+    private Path copied(String name, Path named) {
+        Path copy = dir.resolve(name);
+        return Files.isRegularFile(copy) ? copy : named;
     }
 
     /** Round 0's learner when the run started from a policy, else null (the nominal throw). */

@@ -5,7 +5,6 @@ import handsim.config.Json;
 import handsim.learn.DaggerConfig;
 import handsim.evaluation.ThrowTeacher;
 import handsim.task.FlipTask;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
@@ -22,7 +21,9 @@ public record DaggerRunConfig(TrainConfig.Run run, ThrowTeacher.Config teacher, 
      * the throws after the first made from {@code rest} ({@link FlipTask.Rest}); the others are
      * thrown by the throw policy {@code leadIn} (files as the flip task's learned controller reads
      * them: {@code leadInOpening}, when not null, for each episode's first throw), and episodes are
-     * cut off after throw number {@code maxLoops}.
+     * cut off after throw number {@code maxLoops}. The files are named relative to handsim's folder;
+     * a run reads them when it starts ({@link DaggerRun#start}, which refuses a missing one) and
+     * copies them into its folder.
      */
     public record LearnerThrows(FlipTask.Rest rest, Path leadIn, Path leadInOpening, int maxLoops) {
 
@@ -34,19 +35,10 @@ public record DaggerRunConfig(TrainConfig.Run run, ThrowTeacher.Config teacher, 
             } catch (IllegalArgumentException e) {
                 throw j.fieldError("rest", e.getMessage());
             }
-            LearnerThrows t = new LearnerThrows(rest, file(j, "leadIn"), j.has("leadInOpening") ? file(j, "leadInOpening") : null,
-                    j.integer("maxLoops", 2, 100_000));
+            LearnerThrows t = new LearnerThrows(rest, Home.resolve(j.string("leadIn")),
+                    j.has("leadInOpening") ? Home.resolve(j.string("leadInOpening")) : null, j.integer("maxLoops", 2, 100_000));
             j.requireNoUnknownFields();
             return t;
-        }
-
-        /** A policy file named relative to handsim's folder, which must exist. */
-        private static Path file(Json j, String field) {
-            Path p = Home.resolve(j.string(field));
-            if (!Files.isRegularFile(p)) {
-                throw j.fieldError(field, "no file " + p);
-            }
-            return p;
         }
     }
 

@@ -186,6 +186,36 @@ class CommandsTest {
     }
 
     /**
+     * A DAgger run for one rest copies its lead-in policies into its folder when it starts and reads
+     * the copies from then on, so a resumed run throws as it began whatever becomes of the files its
+     * config names (here a copy of the shipped can policy, deleted before the resume). The learner
+     * throws from the commonest rest, raised across the palm, so two short episodes give it the two throws a fit needs.
+     */
+    @Test
+    void aRestLearnersRunKeepsItsLeadInPoliciesAndResumesWithoutTheFilesItNamed(@TempDir Path dir) throws Exception {
+        Path leadIn = dir.resolve("lead-in-elsewhere.json");
+        Files.copy(handsim.config.Home.resolve("models/policies/flip-can.json"), leadIn);
+        Path runs = dir.resolve("runs");
+        String text = runPrinting("dagger", "--config", "configs/train/flip-flat-askew.json", "--runs", runs.toString(),
+                "--set", "learnerThrows.rest=raised_across", "--set", "learnerThrows.leadIn=" + leadIn, "--set", "learnerThrows.maxLoops=4",
+                "--set", "dagger.rounds=1", "--set", "dagger.episodesPerRound=2", "--set", "dagger.maxDecisionsPerEpisode=2",
+                "--set", "run.workers=1", "--set", "pretrain.epochs=2", "--init-actor", "models/policies/flip-can.json");
+        assertTrue(text.contains("round 0: the learner's own throw succeeded at"), text);
+        Path run;
+        try (var list = Files.list(runs)) {
+            run = list.findFirst().orElseThrow();
+        }
+        assertEquals(-1, Files.mismatch(leadIn, run.resolve("lead-in.json")), "the lead-in policy, copied as it was");
+        assertEquals(-1, Files.mismatch(handsim.config.Home.resolve("models/policies/flip-can-opening.json"),
+                run.resolve("lead-in-opening.json")), "the opening lead-in too");
+        java.util.List<String> rounds = Files.readAllLines(run.resolve("rounds.csv"));
+        assertEquals("0,2,2,", rounds.get(1).substring(0, 6), "round 0: two episodes, two learner's throws (the first throws are the lead-in's)");
+        Files.delete(leadIn);
+        String again = runPrinting("dagger", "--resume", run.toString());
+        assertTrue(again.contains("rounds 1..0 of 1"), "resumed without the file its config names: " + again);
+    }
+
+    /**
      * A DAgger run for one rest names a bad rest or a missing lead-in policy before it writes a
      * folder; evaluate refuses a rest policy where no learned flip is thrown and one trained for
      * every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
