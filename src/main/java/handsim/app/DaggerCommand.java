@@ -2,6 +2,7 @@ package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.learn.Dagger;
 import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
 import handsim.sim.SimConfig;
@@ -49,7 +50,12 @@ final class DaggerCommand implements Callable<Integer> {
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
             DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
                     : started(file, c, envs, rollouts);
-            dagger.run(System.out);
+            try {
+                dagger.run(System.out);
+            } catch (Dagger.TooFewLabels e) {
+                throw new RunFailed(e.getMessage() + "; the episodes played are kept in " + dagger.dir() + ", and a new run with more "
+                        + "of them (dagger.episodesPerRound, dagger.maxDecisionsPerEpisode) gives more labels");
+            }
         }
         return 0;
     }

@@ -162,6 +162,15 @@ public final class Dagger {
     public record Fit(Policy policy, int examples, double trainLoss, double validationLoss) {
     }
 
+    /** A fit with fewer than two labels to fit to: the rounds gave the teacher too few decisions, or it found too few throws. */
+    public static final class TooFewLabels extends IllegalStateException {
+        private static final long serialVersionUID = 1L;
+
+        TooFewLabels(String message) {
+            super(message);
+        }
+    }
+
     /**
      * An actor ({@link DaggerConfig#network}, seeded by {@code seed}; with {@link
      * DaggerConfig.Refit#CONTINUE} starting as {@code start} when that is not null) fitted to the
@@ -172,7 +181,7 @@ public final class Dagger {
         List<Visit> kept = visits.stream().filter(v -> v.label().labelled() && v.label().robustness() >= config.minRobustness())
                 .toList();
         if (kept.size() < 2) {
-            throw new IllegalStateException("DAgger has " + kept.size() + " usable labels to fit (of " + visits.size()
+            throw new TooFewLabels("DAgger has " + kept.size() + " usable labels to fit (of " + visits.size()
                     + " decisions): the teacher found too few actions that work");
         }
         double[][] obs = new double[kept.size()][], actions = new double[kept.size()][];

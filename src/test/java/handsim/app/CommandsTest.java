@@ -216,6 +216,19 @@ class CommandsTest {
     }
 
     /**
+     * A round that leaves fewer than two labels to fit ends the run with one line that says so and
+     * where its episodes are (exit status 1): here the learner throws only from a rest, raised and
+     * askew, that two episodes cut off after throw 3 never reach (seeds 1 and 2).
+     */
+    @Test
+    void aDaggerRoundWithTooFewLabelsEndsInOneLine(@TempDir Path dir) throws Exception {
+        CliRun.of("dagger", "--config", "configs/train/flip-flat-askew.json", "--runs", dir.toString(),
+                "--set", "learnerThrows.rest=raised_askew", "--set", "learnerThrows.maxLoops=3", "--set", "dagger.rounds=1",
+                "--set", "dagger.episodesPerRound=2", "--set", "run.workers=1", "--init-actor", "models/policies/flip-can.json")
+                .assertRefused(1, "0 usable labels", "dagger.episodesPerRound", dir.toString());
+    }
+
+    /**
      * A DAgger run for one rest names a bad rest or a missing lead-in policy before it writes a
      * folder; evaluate refuses a rest policy where no learned flip is thrown and one trained for
      * every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
