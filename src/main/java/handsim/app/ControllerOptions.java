@@ -9,12 +9,21 @@ import picocli.CommandLine.Option;
 /**
  * Who throws, declared once for every command that runs a catch-and-throw loop ({@code
  * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at, the
- * nominal or a learned controller, the learned controller's policy (and the flip's opening
- * policy) and the throw planner. Left
- * out, an option is null (false for {@code --plan}); {@link #task()} and {@link #controller()}
- * give the defaults.
+ * nominal or a learned controller, the learned controller's policy (and the flip's opening and
+ * rest policies) and the throw planner. Left out, an option is null (false for {@code --plan});
+ * {@link #task()} and {@link #controller()} give the defaults.
  */
 final class ControllerOptions {
+
+    /**
+     * The policy files given for a learned controller (null: not given) and whether the planner
+     * chooses the flip's throws: what the viewer's scenes are opened with.
+     */
+    record Choice(Path policy, Path opening, Path rest, boolean plan) {
+
+        /** Nothing given: the shipped policies, no planner. */
+        static final Choice SHIPPED = new Choice(null, null, null, false);
+    }
 
     @Option(names = "--task", description = "height, box or flip (default: height)")
     String task;
@@ -31,6 +40,13 @@ final class ControllerOptions {
                     + "of the launch (default: with the shipped policy, models/policies/flip-<object>-opening.json when it "
                     + "exists; with --policy, that policy makes every throw)")
     Path openingPolicy;
+
+    @Option(names = "--rest-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for the throws after the first made from the rest of the object in "
+                    + "the hand it was trained for (its provenance's config.learnerThrows.rest) (default: with the shipped policy, "
+                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none); with --plan, the planner's "
+                    + "tries go on with it too")
+    Path restPolicy;
 
     @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
             + "world first (handsim.evaluation.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
@@ -62,21 +78,55 @@ final class ControllerOptions {
         if (policy != null && !controller().equals("learned")) {
             throw new IllegalArgumentException("--policy goes with --controller learned");
         }
-        validateOpening();
+        validateFlipPolicies();
     }
 
-    /** Refuses an opening policy where no learned flip is thrown, and one whose file does not exist (a typo). */
-    void validateOpening() {
-        if (openingPolicy != null && (!task().equals("flip") || !controller().equals("learned"))) {
-            throw new IllegalArgumentException("--opening-policy goes with the flip task and --controller learned");
+    /** Refuses an opening or rest policy where no learned flip is thrown, and one whose file does not exist (a typo). */
+    void validateFlipPolicies() {
+        refuseMisplaced("--opening-policy", openingPolicy);
+        refuseMisplaced("--rest-policy", restPolicy);
+    }
+
+    private void refuseMisplaced(String option, Path file) {
+        if (file != null && (!task().equals("flip") || !controller().equals("learned"))) {
+            throw new IllegalArgumentException(option + " goes with the flip task and --controller learned, got --task " + task()
+                    + " --controller " + controller());
         }
-        if (openingPolicy != null && !Files.isRegularFile(openingPolicy)) {
-            throw new IllegalArgumentException("--opening-policy: no file " + openingPolicy);
+        if (file != null && !Files.isRegularFile(file)) {
+            throw new IllegalArgumentException(option + ": no file " + file);
         }
+    }
+
+    /** The options as the viewer's scenes take them. */
+    Choice choice() {
+        return new Choice(policy, openingPolicy, restPolicy, plan);
     }
 
     /** The learned controller's policy file: --policy, or the one shipped for the task and {@code object}. */
     Path policyFile(String object) {
         return policy != null ? policy : ThrowPolicyFile.shipped(task(), object);
+    }
+
+    /**
+     * The learned controller's policy for each episode's first throw: --opening-policy; else, with
+     * the shipped policy, the opening one shipped beside it if there is one; else null (one policy
+     * makes every throw).
+     */
+    Path openingFile(String object) {
+        if (openingPolicy != null || policy != null || !controller().equals("learned")) {
+            return openingPolicy;
+        }
+        return ThrowPolicyFile.shippedOpening(task(), object);
+    }
+
+    /**
+     * The learned controller's policy for the throws from one rest of the object: --rest-policy;
+     * else, with the shipped policy, the rest policy shipped beside it if there is one; else null.
+     */
+    Path restFile(String object) {
+        if (restPolicy != null || policy != null || !controller().equals("learned")) {
+            return restPolicy;
+        }
+        return ThrowPolicyFile.shippedRest(task(), object);
     }
 }

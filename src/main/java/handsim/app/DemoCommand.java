@@ -97,8 +97,8 @@ final class DemoCommand implements Callable<Integer> {
             }
             String flipController = FlipDemo.shippedPolicy(object) != null ? "learned" : "nominal";
             if (!headless && ViewerSession.hasDisplay()) {
-                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null, null, null, false, 0,
-                        null);
+                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null,
+                        ControllerOptions.Choice.SHIPPED, 0, null);
             }
             if (!headless) {
                 System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
@@ -112,8 +112,8 @@ final class DemoCommand implements Callable<Integer> {
         String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals, null, null, false, 0,
-                    null);
+            return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals,
+                    ControllerOptions.Choice.SHIPPED, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");

@@ -55,13 +55,6 @@ final class EvaluateCommand implements Callable<Integer> {
     @Mixin
     EpisodeOptions episodeOptions;
 
-    @Option(names = "--rest-policy", paramLabel = "FILE",
-            description = "flip, learned controller: the policy for the throws after the first made from the rest of the object in "
-                    + "the hand it was trained for (its provenance's config.learnerThrows.rest) (default: with the shipped policy, "
-                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none); with --plan, the planner's "
-                    + "tries go on with it too")
-    Path restPolicy;
-
     @Option(names = "--loops", paramLabel = "N", description = "height: throws to attempt per episode after the first catch "
             + "(default: configs/tasks/height.json evaluationThrows); flip: the most flip-and-catch loops an episode runs to "
             + "(default: configs/tasks/flip.json evaluationLoops); --copies: throws per copy (default: configs/evaluation.json "
@@ -155,9 +148,9 @@ final class EvaluateCommand implements Callable<Integer> {
         out.put("planned", who.plan);
         if (who.policy != null || controller.equals("learned")) {
             out.put("policy", who.policyFile(object).toString());
-            Path opening = openingFile();
+            Path opening = who.openingFile(object);
             out.put("opening_policy", opening != null ? opening.toString() : null);
-            Path rest = restFile();
+            Path rest = who.restFile(object);
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", object);
@@ -205,9 +198,9 @@ final class EvaluateCommand implements Callable<Integer> {
                 .put("seed", episodeOptions.seed);
         Path policy = controller.equals("learned") ? who.policyFile(object) : null;
         s.put("policy", policy != null ? policy.toAbsolutePath().normalize().toString() : null);
-        Path opening = openingFile(); // null for the nominal controller
+        Path opening = who.openingFile(object); // null for the nominal controller
         s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
-        Path rest = restFile(); // null for the nominal controller
+        Path rest = who.restFile(object); // null for the nominal controller
         if (rest != null) { // absent when none: a run without one keeps the signature it had without the option
             s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
         }
@@ -221,13 +214,6 @@ final class EvaluateCommand implements Callable<Integer> {
 
     private void validate() {
         who.validate();
-        if (restPolicy != null && (!task.equals("flip") || !controller.equals("learned"))) {
-            throw new IllegalArgumentException("--rest-policy goes with the flip task and --controller learned, got --task " + task
-                    + " --controller " + controller);
-        }
-        if (restPolicy != null && !Files.isRegularFile(restPolicy)) {
-            throw new IllegalArgumentException("--rest-policy: no file " + restPolicy);
-        }
         if (loops < 0 || loops > 100000) {
             throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
         }
@@ -276,29 +262,6 @@ final class EvaluateCommand implements Callable<Integer> {
         new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
     }
 
-    /**
-     * The learned controller's policy for each episode's first throw: --opening-policy; else, with
-     * the shipped policy, the opening one shipped beside it if there is one; else null (one policy
-     * makes every throw).
-     */
-    private Path openingFile() {
-        if (who.openingPolicy != null || who.policy != null || !controller.equals("learned")) {
-            return who.openingPolicy;
-        }
-        return ThrowPolicyFile.shippedOpening(task, object);
-    }
-
-    /**
-     * The learned controller's policy for the throws from one rest of the object: --rest-policy;
-     * else, with the shipped policy, the rest policy shipped beside it if there is one; else null.
-     */
-    private Path restFile() {
-        if (restPolicy != null || who.policy != null || !controller.equals("learned")) {
-            return restPolicy;
-        }
-        return ThrowPolicyFile.shippedRest(task, object);
-    }
-
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
@@ -310,13 +273,13 @@ final class EvaluateCommand implements Callable<Integer> {
                     : "no shipped policy for the " + task + " task with a " + object + " (" + Home.root().relativize(file)
                             + "): train one (scripts/handsim train) and give it with --policy");
         }
-        Path opening = openingFile(); // given: checked to exist by who.validate()
+        Path opening = who.openingFile(object); // given: checked to exist by who.validate()
         ObjectSpec spec = Wiring.object(object);
         StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
         // each file read once, each worker's task given its own policy
         ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
         ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.loadOpening(opening);
-        Path rest = restFile();
+        Path rest = who.restFile(object);
         ThrowPolicyFile loadedRest = rest == null ? null : ThrowPolicyFile.loadRest(rest);
         ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
         return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, t, spec, hand);

@@ -38,9 +38,9 @@ final class SceneOptions {
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
 
-    /** Refuses a duration out of (0, 600] s, a goal height the height task does not allow and a misplaced opening policy. */
+    /** Refuses a duration out of (0, 600] s, a goal height the height task does not allow and a misplaced opening or rest policy. */
     void validate() {
-        who.validateOpening();
+        who.validateFlipPolicies();
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
         }
@@ -62,8 +62,7 @@ final class SceneOptions {
             return new HeldBallScene(new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), Wiring.object("sphere"), 0.2, episodeOptions.seed));
         }
         SceneSetup wanted = new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed);
-        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), who.policy, who.openingPolicy,
-                who.plan, viewerConfig);
+        SwitchingScene scene = ViewerSession.scene(command, wanted, HeightGoals.fixed(throwHeight), who.choice(), viewerConfig);
         System.out.println("handsim " + command + ": " + describe(scene));
         return scene;
     }

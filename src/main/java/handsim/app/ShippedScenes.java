@@ -43,23 +43,19 @@ final class ShippedScenes implements SceneCatalog {
     private final SimConfig simConfig = Wiring.simConfig();
     private final HeightGoals goals;
     private final HeightControl heightControl;
-    private final Path policy;
-    private final Path opening;
-    private final boolean plan;
+    private final ControllerOptions.Choice who;
     private final List<String> objects;
 
     /**
      * {@code goals} are shared by every scene opened (moving the goal survives a switch of
-     * object); {@code policy} is the learned controller's file, or null, {@code opening} the
-     * policy for each flip episode's first throw, or null; with {@code plan} a {@link
-     * handsim.evaluation.ThrowPlanner} chooses the flip task's throws.
+     * object); {@code who} names the learned controller's policy files given (each null when not:
+     * the shipped ones) and whether a {@link handsim.evaluation.ThrowPlanner} chooses the flip
+     * task's throws.
      */
-    ShippedScenes(HeightGoals goals, HeightControl heightControl, Path policy, Path opening, boolean plan) {
+    ShippedScenes(HeightGoals goals, HeightControl heightControl, ControllerOptions.Choice who) {
         this.goals = goals;
         this.heightControl = heightControl;
-        this.policy = policy;
-        this.opening = opening;
-        this.plan = plan;
+        this.who = who;
         this.objects = listObjects();
     }
 
@@ -79,15 +75,15 @@ final class ShippedScenes implements SceneCatalog {
 
     /**
      * Rejects names this catalog does not list and a --policy file that does not exist (typos on
-     * the command line; a missing --opening-policy file is refused with the options, {@link
-     * ControllerOptions#validateOpening}).
+     * the command line; a missing --opening-policy or --rest-policy file is refused with the
+     * options, {@link ControllerOptions#validateFlipPolicies}).
      */
     void validate(SceneSetup s) {
         check("--task", s.task(), TASKS);
         check("--object", s.object(), objects);
         check("--controller", s.controller(), CONTROLLERS);
-        if (policy != null && !Files.isRegularFile(policy)) { // a typo, not a policy that does not fit: refused
-            throw new IllegalArgumentException("--policy: no file " + policy);
+        if (who.policy() != null && !Files.isRegularFile(who.policy())) { // a typo, not a policy that does not fit: refused
+            throw new IllegalArgumentException("--policy: no file " + who.policy());
         }
     }
 
@@ -142,9 +138,9 @@ final class ShippedScenes implements SceneCatalog {
                 Wiring.object(shown.object()), task, throwPolicy);
         Simulator sim = Wiring.simulator(model, simConfig);
         Simulator twin = null;
-        if (plan && task.goalSize() != 0) {
+        if (who.plan() && task.goalSize() != 0) {
             notes.add("the throw planner chooses the flip task's throws only: the " + task.name() + " task's are not planned");
-        } else if (plan) {
+        } else if (who.plan()) {
             twin = Wiring.twinSimulator(sim);
             evaluation = evaluation.planned(Wiring.plannerConfig(shown.object()), twin);
         }
@@ -155,18 +151,18 @@ final class ShippedScenes implements SceneCatalog {
     /**
      * The learned throw policy for a setup: {@code --policy} if given (and meant for this task
      * and object), else the shipped one; each episode's first throw by {@code --opening-policy}
-     * if given (and meant for them), else, with the shipped policy, by the shipped opening; with
-     * the shipped policy, the throws from one rest by the shipped rest policy, when one ships; the
-     * exception's message says why there is none.
+     * if given (and meant for them), else, with the shipped policy, by the shipped opening; the
+     * throws from one rest by {@code --rest-policy} likewise, else with the shipped policy by the
+     * shipped rest policy, when one ships; the exception's message says why there is none.
      */
     private ThrowPolicy learned(SceneSetup setup, ThrowTask task) {
-        Path file = policy;
-        Path opening = this.opening != null && matches(this.opening, setup) ? this.opening : null;
-        Path rest = null;
+        Path file = who.policy();
+        Path opening = who.opening() != null && matches(who.opening(), setup) ? who.opening() : null;
+        Path rest = who.rest() != null && matches(who.rest(), setup) ? who.rest() : null;
         if (file == null || !matches(file, setup)) {
             file = ThrowPolicyFile.shipped(setup.task(), setup.object());
             opening = opening != null ? opening : ThrowPolicyFile.shippedOpening(setup.task(), setup.object());
-            rest = ThrowPolicyFile.shippedRest(setup.task(), setup.object());
+            rest = rest != null ? rest : ThrowPolicyFile.shippedRest(setup.task(), setup.object());
             if (!Files.isRegularFile(file)) {
                 throw new IllegalArgumentException("no learned policy for the " + setup.task() + " task with a " + setup.object()
                         + " (none shipped; give --policy FILE)");

@@ -60,10 +60,10 @@ final class ViewCommand implements Callable<Integer> {
         if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
         }
-        who.validateOpening();
+        who.validateFlipPolicies();
         HeightGoals goals = DemoCommand.parseHeights(heights);
         new OutputPaths().file("--screenshot", screenshot).check();
         return ViewerSession.open("view", new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed), goals,
-                who.policy, who.openingPolicy, who.plan, benchmarkFrames, screenshot);
+                who.choice(), benchmarkFrames, screenshot);
     }
 }

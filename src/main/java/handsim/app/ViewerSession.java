@@ -29,21 +29,19 @@ final class ViewerSession {
     /**
      * The scene of {@link ShippedScenes} for {@code wanted} (a name it does not list is refused),
      * its fallback notes printed as {@code handsim COMMAND: ...}: what {@code view} shows and
-     * {@code render} draws. With {@code plan} a throw planner chooses the flip task's throws.
+     * {@code render} draws, with the policies and planner {@code who} chose.
      */
-    static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, Path policy, Path opening, boolean plan,
+    static SwitchingScene scene(String command, SceneSetup wanted, HeightGoals goals, ControllerOptions.Choice who,
             ViewerConfig config) {
-        SwitchingScene scene = new SwitchingScene(catalog(wanted, goals, policy, opening, plan, config), wanted);
+        SwitchingScene scene = new SwitchingScene(catalog(wanted, goals, who, config), wanted);
         scene.openingNotes().forEach(n -> System.out.println("handsim " + command + ": " + n));
         return scene;
     }
 
     /** The catalog of {@link ShippedScenes} for the options given; a name it does not list is refused. */
-    private static ShippedScenes catalog(SceneSetup wanted, HeightGoals goals, Path policy, Path opening, boolean plan,
-            ViewerConfig config) {
+    private static ShippedScenes catalog(SceneSetup wanted, HeightGoals goals, ControllerOptions.Choice who, ViewerConfig config) {
         ViewerConfig.Goals g = config.goals();
-        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), policy,
-                opening, plan);
+        ShippedScenes catalog = new ShippedScenes(goals, new HeightControl(g.heightStep(), g.heightMin(), g.heightMax()), who);
         catalog.validate(wanted);
         return catalog;
     }
@@ -59,16 +57,16 @@ final class ViewerSession {
      * as fast as possible (then prints the mean frame rate and real-time factor); writes a
      * screenshot of the last frame to {@code screenshot} if given.
      */
-    static int open(String command, SceneSetup wanted, HeightGoals goals, Path policy, Path opening, boolean plan,
-            int benchmarkFrames, Path screenshot) {
+    static int open(String command, SceneSetup wanted, HeightGoals goals, ControllerOptions.Choice who, int benchmarkFrames,
+            Path screenshot) {
         ViewerConfig config = config();
-        catalog(wanted, goals, policy, opening, plan, config); // bad names and settings are refused first
+        catalog(wanted, goals, who, config); // bad names and settings are refused first
         if (!hasDisplay()) {
             throw new IllegalArgumentException("no X display (DISPLAY is not set): the viewer needs one "
                     + "(scripts/handsim demo runs headless; view --benchmark-frames N runs under xvfb-run)");
         }
         String prefix = "handsim " + command + ": ";
-        SwitchingScene scene = scene(command, wanted, goals, policy, opening, plan, config);
+        SwitchingScene scene = scene(command, wanted, goals, who, config);
         ViewerConfig.Pacing p = config.pacing();
         SceneSetup shown = scene.shown();
         String title = "handsim — " + shown.task() + " task, " + shown.object() + ", " + shown.controller() + " controller";

@@ -230,8 +230,8 @@ class CommandsTest {
 
     /**
      * A DAgger run for one rest names a bad rest or a missing lead-in policy before it writes a
-     * folder; evaluate refuses a rest policy where no learned flip is thrown and one trained for
-     * every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
+     * folder; evaluate (and view, render, export) refuse a rest policy where no learned flip is
+     * thrown, evaluate one trained for every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
      */
     @Test
     void restLearnersAndRestPoliciesAreRefusedByNameWhenMisgiven(@TempDir Path dir) throws Exception {
@@ -252,6 +252,11 @@ class CommandsTest {
                 .assertRefused(2, "--rest-policy", "none.json");
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", policy, "--loops", "1")
                 .assertRefused(2, "rest policy", "flip-can.json", "learnerThrows.rest");
+        // the scenes take it as evaluate does (view, render, export share the option)
+        CliRun.of("render", "--task", "height", "--controller", "learned", "--rest-policy", policy, "--out", dir.resolve("r").toString())
+                .assertRefused(2, "--rest-policy", "got --task height --controller learned");
+        CliRun.of("view", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", "none.json")
+                .assertRefused(2, "--rest-policy: no file", "none.json");
     }
 
     @Test
@@ -439,7 +444,7 @@ class CommandsTest {
 
     @Test
     void aTaskThatCannotTakeTheObjectAndAMissingPolicyFallBackToHeightAndNominalWithNotes() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, null, false);
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), ControllerOptions.Choice.SHIPPED);
         // the flip task does not flip cuboids, and no policy is shipped for the cuboid: height and nominal
         SceneCatalog.Opened opened = catalog.open(new SceneSetup("flip", "cuboid", "learned", 1));
         try (InteractiveScene scene = opened.scene()) {
@@ -462,7 +467,7 @@ class CommandsTest {
 
     @Test
     void theViewersPlannedFlipSceneShowsThePlannersWorkAndOtherTasksAreNotPlannedWithANote() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, null, true);
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true));
         SceneCatalog.Opened flip = catalog.open(new SceneSetup("flip", "can", "learned", 101));
         try (InteractiveScene scene = flip.scene()) {
             assertTrue(flip.notes().isEmpty(), String.join(" | ", flip.notes()));

@@ -169,7 +169,7 @@ class FaultInjectionTest {
         withHome(home, () -> {
             CliRun.of("demo", "--headless", "--loops", "1", "--runs", runs.toString())
                     .assertRefused(1, "gave up after 2 throw-ins in a row", "maxFailedThrowIns");
-            ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), null, null, false);
+            ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), ControllerOptions.Choice.SHIPPED);
             try (InteractiveScene scene = catalog.open(new SceneSetup("height", "sphere", "nominal", 1)).scene()) {
                 for (int i = 0; i < 200 && !scene.status().containsKey("stopped"); i++) {
                     scene.advance(0.1);
