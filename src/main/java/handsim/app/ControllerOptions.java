@@ -113,10 +113,7 @@ final class ControllerOptions {
      * makes every throw).
      */
     Path openingFile(String object) {
-        if (openingPolicy != null || policy != null || !controller().equals("learned")) {
-            return openingPolicy;
-        }
-        return ThrowPolicyFile.shippedOpening(task(), object);
+        return givenOrBesideShipped(openingPolicy, ThrowPolicyFile.shippedOpening(task(), object));
     }
 
     /**
@@ -124,9 +121,11 @@ final class ControllerOptions {
      * else, with the shipped policy, the rest policy shipped beside it if there is one; else null.
      */
     Path restFile(String object) {
-        if (restPolicy != null || policy != null || !controller().equals("learned")) {
-            return restPolicy;
-        }
-        return ThrowPolicyFile.shippedRest(task(), object);
+        return givenOrBesideShipped(restPolicy, ThrowPolicyFile.shippedRest(task(), object));
+    }
+
+    /** {@code given} when given, with --policy or for the nominal controller; else {@code shipped} (null when none ships). */
+    private Path givenOrBesideShipped(Path given, Path shipped) {
+        return given != null || policy != null || !controller().equals("learned") ? given : shipped;
     }
 }
