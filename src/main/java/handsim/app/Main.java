@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         description = "A physically simulated arm and hand that catches and throws (Luo et al., MIG 2021).",
         subcommands = {DemoCommand.class, InfoCommand.class, BenchCommand.class, EvaluateCommand.class, RenderCommand.class,
                 ExportCommand.class, ViewCommand.class, TrainCommand.class, DaggerCommand.class, WarmstartCommand.class,
-                CurvesCommand.class, CardsCommand.class})
+                CurvesCommand.class, CompareCommand.class, CardsCommand.class})
 public final class Main implements Runnable {
 
     public static void main(String[] args) {

@@ -229,6 +229,43 @@ class CommandsTest {
     }
 
     /**
+     * compare reads two flip evaluations' JSON (the fields evaluate writes: task, object,
+     * max_loops, episodes with seed and loops_completed) and prints the paired difference on the
+     * seeds both ran; another task, another object or a file that is no evaluation is refused.
+     */
+    @Test
+    void compareGivesThePairedDifferenceOfTwoFlipEvaluations(@TempDir Path dir) throws Exception {
+        Path a = evaluationJson(dir, "a.json", "flip", "can", "[[1, 100], [2, 0], [3, 17]]");
+        Path b = evaluationJson(dir, "b.json", "flip", "can", "[[1, 100], [2, 100], [3, 11], [4, 9]]");
+        Path out = dir.resolve("cmp.json");
+        String text = runPrinting("compare", a.toString(), b.toString(), "--json", out.toString());
+        // B - A on seeds 1-3: 0, +100, -6 (mean 31.33); A 39.00, B 70.33
+        assertTrue(text.contains("3 episodes on the same seeds (1-3): A 39.00, B 70.33 loops in a row; B - A +31.33"), text);
+        assertTrue(text.contains("more loops on 1 seeds, fewer on 1, as many on 1: seed 2 0 -> 100, seed 3 17 -> 11"), text);
+        assertTrue(text.contains("left out: 0 seeds only A ran, 1 only B ran"), text);
+        assertEquals(31.333, Json.load(out).node().get("meanDifference").asDouble(), 1e-3);
+        CliRun.of("compare", a.toString(), evaluationJson(dir, "h.json", "height", "sphere", "[]").toString())
+                .assertRefused(2, "h.json", "height task");
+        CliRun.of("compare", a.toString(), evaluationJson(dir, "c.json", "flip", "club", "[[1, 0]]").toString())
+                .assertRefused(2, "object", "\"can\"", "\"club\"");
+        Files.writeString(dir.resolve("x.json"), "{\"loops\": 3}");
+        CliRun.of("compare", a.toString(), dir.resolve("x.json").toString()).assertRefused(2, "x.json", "not the JSON of an evaluation");
+    }
+
+    /** A file with the fields of an evaluation's JSON that compare reads; {@code episodes} as [[seed, loops], ...]. */
+    private static Path evaluationJson(Path dir, String name, String task, String object, String episodes) throws Exception {
+        StringBuilder e = new StringBuilder("[");
+        for (JsonNode pair : Json.mapper().readTree(episodes)) {
+            e.append(e.length() > 1 ? ", " : "").append("{\"seed\": ").append(pair.get(0)).append(", \"loops_completed\": ")
+                    .append(pair.get(1)).append("}");
+        }
+        Path file = dir.resolve(name);
+        Files.writeString(file, "{\"task\": \"" + task + "\", \"object\": \"" + object + "\", \"max_loops\": 100, \"episodes\": "
+                + e + "]}");
+        return file;
+    }
+
+    /**
      * A DAgger run for one rest names a bad rest or a missing lead-in policy before it writes a
      * folder; evaluate (and view, render, export) refuse a rest policy where no learned flip is
      * thrown, evaluate one trained for every throw, which serves no rest (configs/train/flip-flat-askew.json, models/policies).
