@@ -54,7 +54,8 @@ final class DaggerCommand implements Callable<Integer> {
                 dagger.run(System.out);
             } catch (Dagger.TooFewLabels e) {
                 throw new RunFailed(e.getMessage() + "; the episodes played are kept in " + dagger.dir() + ", and a new run with more "
-                        + "of them (dagger.episodesPerRound, dagger.maxDecisionsPerEpisode) gives more labels");
+                        + "decisions (dagger.episodesPerRound, dagger.maxDecisionsPerEpisode" + (c.learnerThrows() == null ? ""
+                                : ", learnerThrows.maxLoops or another learnerThrows.rest") + ") gives more labels");
             }
         }
         return 0;

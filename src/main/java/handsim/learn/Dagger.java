@@ -181,8 +181,9 @@ public final class Dagger {
         List<Visit> kept = visits.stream().filter(v -> v.label().labelled() && v.label().robustness() >= config.minRobustness())
                 .toList();
         if (kept.size() < 2) {
-            throw new TooFewLabels("DAgger has " + kept.size() + " usable labels to fit (of " + visits.size()
-                    + " decisions): the teacher found too few actions that work");
+            throw new TooFewLabels("DAgger has " + kept.size() + " usable labels to fit (of " + visits.size() + " decisions): "
+                    + (visits.size() < 2 ? "the episodes gave the learner too few decisions"
+                            : "the teacher found too few throws that work (or too few robust enough)"));
         }
         double[][] obs = new double[kept.size()][], actions = new double[kept.size()][];
         double[] weights = new double[kept.size()];

@@ -103,15 +103,20 @@ public final class DaggerRun {
         Outputs.writeJson(dir.resolve(CONFIG), configFile.node());
         Outputs.writeJson(dir.resolve(RUN_JSON), provenance);
         if (initPolicy != null) {
-            Files.copy(initPolicy, dir.resolve(INIT_POLICY));
+            copy(initPolicy, dir.resolve(INIT_POLICY));
         }
         if (config.learnerThrows() != null) {
-            Files.copy(config.learnerThrows().leadIn(), dir.resolve(LEAD_IN));
+            copy(config.learnerThrows().leadIn(), dir.resolve(LEAD_IN));
             if (config.learnerThrows().leadInOpening() != null) {
-                Files.copy(config.learnerThrows().leadInOpening(), dir.resolve(LEAD_IN_OPENING));
+                copy(config.learnerThrows().leadInOpening(), dir.resolve(LEAD_IN_OPENING));
             }
         }
         return new DaggerRun(dir, config, envs, rollouts, twins);
+    }
+
+    /** A copy of {@code from} at {@code to}, written atomically (a killed start leaves no half file for a resume to read). */
+    private static void copy(Path from, Path to) throws IOException {
+        Outputs.write(to, out -> Files.copy(from, out));
     }
 
     /** Continues the run in {@code dir} with the config saved there (and the lead-in policies copied there). */
@@ -209,12 +214,14 @@ public final class DaggerRun {
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("learnerThrows.rest: " + e.getMessage(), e);
         }
-        for (Path file : new Path[] {throwsOf.leadIn(), throwsOf.leadInOpening()}) {
+        Map<String, Path> files = new java.util.LinkedHashMap<>();
+        files.put("leadIn", throwsOf.leadIn());
+        files.put("leadInOpening", throwsOf.leadInOpening());
+        files.forEach((field, file) -> {
             if (file != null && !Files.isRegularFile(file)) {
-                throw new IllegalArgumentException("learnerThrows." + (file == throwsOf.leadIn() ? "leadIn" : "leadInOpening")
-                        + ": no file " + file);
+                throw new IllegalArgumentException("learnerThrows." + field + ": no file " + file);
             }
-        }
+        });
         ThrowPolicy leadIn;
         try {
             leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),

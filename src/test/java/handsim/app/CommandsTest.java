@@ -210,9 +210,17 @@ class CommandsTest {
                 run.resolve("lead-in-opening.json")), "the opening lead-in too");
         java.util.List<String> rounds = Files.readAllLines(run.resolve("rounds.csv"));
         assertEquals("0,2,2,", rounds.get(1).substring(0, 6), "round 0: two episodes, two learner's throws (the first throws are the lead-in's)");
+        // round 0 unfinished again (its row and policies gone): the resume plays it from its kept episodes, its
+        // workers built with the lead-in policy, which only the run folder's copy still holds
+        java.util.List<String> decisions = Files.readAllLines(run.resolve("demonstrations.csv"));
         Files.delete(leadIn);
+        Files.delete(run.resolve("rounds.csv"));
+        Files.delete(run.resolve("policies/round-00.json"));
+        Files.delete(run.resolve("policy.json"));
         String again = runPrinting("dagger", "--resume", run.toString());
-        assertTrue(again.contains("rounds 1..0 of 1"), "resumed without the file its config names: " + again);
+        assertTrue(again.contains("rounds 0..0 of 1") && again.contains("round 0: the learner's own throw succeeded at 2 of 2"), again);
+        assertEquals(decisions, Files.readAllLines(run.resolve("demonstrations.csv")), "its episodes kept, none played twice");
+        assertTrue(Files.isRegularFile(run.resolve("policy.json")), "and fitted again");
     }
 
     /**
@@ -225,7 +233,8 @@ class CommandsTest {
         CliRun.of("dagger", "--config", "configs/train/flip-flat-askew.json", "--runs", dir.toString(),
                 "--set", "learnerThrows.rest=raised_askew", "--set", "learnerThrows.maxLoops=3", "--set", "dagger.rounds=1",
                 "--set", "dagger.episodesPerRound=2", "--set", "run.workers=1", "--init-actor", "models/policies/flip-can.json")
-                .assertRefused(1, "0 usable labels", "dagger.episodesPerRound", dir.toString());
+                .assertRefused(1, "0 usable labels", "too few decisions", "dagger.episodesPerRound", "learnerThrows.maxLoops",
+                        dir.toString());
     }
 
     /**
@@ -277,6 +286,8 @@ class CommandsTest {
                 .assertRefused(2, "learnerThrows.rest", "\"flat\"", "flat_askew");
         CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.leadIn=models/policies/none.json")
                 .assertRefused(2, "learnerThrows.leadIn", "none.json");
+        CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set",
+                "learnerThrows.leadInOpening=models/policies/none.json").assertRefused(2, "learnerThrows.leadInOpening", "none.json");
         CliRun.of("dagger", "--config", config, "--runs", dir.toString(), "--set", "learnerThrows.leadIn=models/policies/height-sphere.json")
                 .assertRefused(2, "learnerThrows.leadIn", "height-sphere.json", "height task");
         try (var list = Files.list(dir)) {
@@ -289,7 +300,7 @@ class CommandsTest {
                 .assertRefused(2, "--rest-policy", "none.json");
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", policy, "--loops", "1")
                 .assertRefused(2, "rest policy", "flip-can.json", "learnerThrows.rest");
-        // the scenes take it as evaluate does (view, render, export share the option)
+        // view, render and export take the option too, refused alike when misplaced
         CliRun.of("render", "--task", "height", "--controller", "learned", "--rest-policy", policy, "--out", dir.resolve("r").toString())
                 .assertRefused(2, "--rest-policy", "got --task height --controller learned");
         CliRun.of("view", "--task", "flip", "--object", "can", "--controller", "learned", "--rest-policy", "none.json")
