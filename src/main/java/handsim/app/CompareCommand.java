@@ -13,8 +13,10 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code handsim compare}: two flip evaluations ({@code evaluate --task flip --json}) of the same
@@ -35,6 +37,9 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--json", paramLabel = "FILE", description = "also write the comparison as JSON")
     Path json;
 
+    @Spec
+    CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
         new OutputPaths().file("--json", json).check();
@@ -45,24 +50,44 @@ final class CompareCommand implements Callable<Integer> {
                         + jb.get(field).node() + " in " + b);
             }
         }
-        PairedLoops p = PairedLoops.of(loopsBySeed(ja), loopsBySeed(jb));
+        PairedLoops p;
+        try {
+            p = PairedLoops.of(loopsBySeed(ja, a), loopsBySeed(jb, b));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(a + " and " + b + ": " + e.getMessage(), e);
+        }
+        int same = p.seeds().size() - p.changes().size();
         System.out.printf(Locale.ROOT, "flip task, %s, %d episodes on the same seeds (%s): A %.2f, B %.2f loops in a row; "
-                + "B - A %+.2f (paired standard error %.2f)%n", ja.string("object"), p.seeds().size(), seedRanges(p.seeds()), p.meanA(),
-                p.meanB(), p.meanDifference(), p.standardError());
-        System.out.printf(Locale.ROOT, "B made more loops on %d seeds, fewer on %d, as many on %d%s%n", p.better(), p.worse(),
-                p.seeds().size() - p.changes().size(), p.changes().isEmpty() ? "" : ": " + p.changes().stream()
+                + "B - A %+.2f (paired standard error %s)%n", ja.string("object"), p.seeds().size(), seedRanges(p.seeds()), p.meanA(),
+                p.meanB(), p.meanDifference(), Double.isNaN(p.standardError()) ? "n/a: one seed"
+                        : String.format(Locale.ROOT, "%.2f", p.standardError()));
+        System.out.printf(Locale.ROOT, "seeds where B made more loops: %d, fewer: %d, as many: %d%s%n", p.better(), p.worse(), same,
+                p.changes().isEmpty() ? "" : "; " + p.changes().stream()
                         .map(c -> "seed " + c.seed() + " " + c.loopsA() + " -> " + c.loopsB()).collect(Collectors.joining(", ")));
         if (!p.onlyA().isEmpty() || !p.onlyB().isEmpty()) {
-            System.out.printf(Locale.ROOT, "left out: %d seeds only A ran, %d only B ran%n", p.onlyA().size(), p.onlyB().size());
+            System.out.printf(Locale.ROOT, "left out: seeds only A ran: %d, only B ran: %d%n", p.onlyA().size(), p.onlyB().size());
         }
         if (json != null) {
-            ObjectNode out = Json.mapper().valueToTree(p);
-            out.put("a", a.toString()).put("b", b.toString()).put("object", ja.string("object"));
-            out.put("better", p.better()).put("worse", p.worse());
-            Outputs.writeJson(json, out);
+            Outputs.writeJson(json, toJson(p, ja));
             System.out.println("wrote " + json);
         }
         return 0;
+    }
+
+    /** The comparison in the snake_case of evaluate's JSON, with where it came from. */
+    private ObjectNode toJson(PairedLoops p, Json ja) {
+        ObjectNode out = Json.mapper().createObjectNode();
+        out.put("task", "flip").put("object", ja.string("object")).set("max_loops", ja.get("max_loops").node());
+        out.put("a", a.toString()).put("b", b.toString());
+        p.seeds().forEach(out.putArray("seeds")::add);
+        out.put("mean_a", p.meanA()).put("mean_b", p.meanB()).put("mean_difference", p.meanDifference())
+                .put("standard_error", p.standardError()).put("better", p.better()).put("worse", p.worse());
+        var changes = out.putArray("changes");
+        p.changes().forEach(c -> changes.addObject().put("seed", c.seed()).put("loops_a", c.loopsA()).put("loops_b", c.loopsB()));
+        p.onlyA().forEach(out.putArray("only_a")::add);
+        p.onlyB().forEach(out.putArray("only_b")::add);
+        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs()));
+        return out;
     }
 
     /** The JSON of a flip evaluation; anything else is refused, naming the file. */
@@ -71,6 +96,10 @@ final class CompareCommand implements Callable<Integer> {
             throw new IllegalArgumentException("no file " + file);
         }
         Json j = Json.load(file);
+        if (j.has("copies")) {
+            throw new IllegalArgumentException(file + " is a sensitivity run (evaluate --copies): compare reads flip evaluations "
+                    + "without --copies");
+        }
         if (!j.has("task") || !j.has("episodes") || !j.has("object") || !j.has("max_loops")) {
             throw new IllegalArgumentException(file + " is not the JSON of an evaluation (evaluate --json)");
         }
@@ -81,10 +110,13 @@ final class CompareCommand implements Callable<Integer> {
         return j;
     }
 
-    private static Map<Long, Integer> loopsBySeed(Json evaluation) {
+    /** Each episode's loops in a row by its seed; a seed twice is refused. */
+    private static Map<Long, Integer> loopsBySeed(Json evaluation, Path file) {
         Map<Long, Integer> loops = new LinkedHashMap<>();
         for (Json e : evaluation.array("episodes")) {
-            loops.put(e.longValue("seed"), e.integer("loops_completed"));
+            if (loops.put(e.longValue("seed"), e.integer("loops_completed")) != null) {
+                throw new IllegalArgumentException(file + ": seed " + e.longValue("seed") + " appears twice");
+            }
         }
         return loops;
     }

@@ -17,7 +17,7 @@ import java.util.TreeSet;
  * @param meanB the same for B
  * @param meanDifference mean of B − A
  * @param standardError the standard error of {@code meanDifference} (the differences' sample
- *     standard deviation over the square root of their number; 0 for a single seed)
+ *     standard deviation over the square root of their number; NaN for a single seed)
  * @param changes the seeds where B's loops differ from A's, ascending
  * @param onlyA seeds A ran and B did not
  * @param onlyB seeds B ran and A did not
@@ -29,7 +29,7 @@ public record PairedLoops(List<Long> seeds, double meanA, double meanB, double m
     public record Change(long seed, int loopsA, int loopsB) {
     }
 
-    /** Compares the loops in a row by seed of A and of B; fails when they share no seed. */
+    /** Compares the loops in a row by seed of A and of B; fails when they share no seed (the caller names the two). */
     public static PairedLoops of(Map<Long, Integer> a, Map<Long, Integer> b) {
         List<Long> seeds = new ArrayList<>(new TreeSet<>(a.keySet()));
         seeds.retainAll(b.keySet());
@@ -50,7 +50,7 @@ public record PairedLoops(List<Long> seeds, double meanA, double meanB, double m
         }
         int n = seeds.size();
         double mean = sumD / n;
-        double variance = n > 1 ? Math.max(0, (sumD2 - n * mean * mean) / (n - 1)) : 0;
+        double variance = n > 1 ? Math.max(0, (sumD2 - n * mean * mean) / (n - 1)) : Double.NaN;
         List<Long> onlyA = new ArrayList<>(new TreeSet<>(a.keySet()));
         onlyA.removeAll(b.keySet());
         List<Long> onlyB = new ArrayList<>(new TreeSet<>(b.keySet()));

@@ -250,15 +250,26 @@ class CommandsTest {
         String text = runPrinting("compare", a.toString(), b.toString(), "--json", out.toString());
         // B - A on seeds 1-3: 0, +100, -6 (mean 31.33); A 39.00, B 70.33
         assertTrue(text.contains("3 episodes on the same seeds (1-3): A 39.00, B 70.33 loops in a row; B - A +31.33"), text);
-        assertTrue(text.contains("more loops on 1 seeds, fewer on 1, as many on 1: seed 2 0 -> 100, seed 3 17 -> 11"), text);
-        assertTrue(text.contains("left out: 0 seeds only A ran, 1 only B ran"), text);
-        assertEquals(31.333, Json.load(out).node().get("meanDifference").asDouble(), 1e-3);
+        assertTrue(text.contains("seeds where B made more loops: 1, fewer: 1, as many: 1; seed 2 0 -> 100, seed 3 17 -> 11"), text);
+        assertTrue(text.contains("left out: seeds only A ran: 0, only B ran: 1"), text);
+        JsonNode saved = Json.load(out).node();
+        assertEquals(31.333, saved.get("mean_difference").asDouble(), 1e-3);
+        assertEquals(100, saved.get("changes").get(0).get("loops_b").asInt());
+        assertTrue(saved.get("provenance").get("command").asText().startsWith("scripts/handsim compare "), saved.toString());
+        String one = runPrinting("compare", a.toString(), evaluationJson(dir, "one.json", "flip", "can", "[[2, 5]]").toString());
+        assertTrue(one.contains("B - A +5.00 (paired standard error n/a: one seed)"), one);
         CliRun.of("compare", a.toString(), evaluationJson(dir, "h.json", "height", "sphere", "[]").toString())
                 .assertRefused(2, "h.json", "height task");
         CliRun.of("compare", a.toString(), evaluationJson(dir, "c.json", "flip", "club", "[[1, 0]]").toString())
                 .assertRefused(2, "object", "\"can\"", "\"club\"");
         Files.writeString(dir.resolve("x.json"), "{\"loops\": 3}");
         CliRun.of("compare", a.toString(), dir.resolve("x.json").toString()).assertRefused(2, "x.json", "not the JSON of an evaluation");
+        Files.writeString(dir.resolve("s.json"), "{\"task\": \"flip\", \"copies\": 8}");
+        CliRun.of("compare", a.toString(), dir.resolve("s.json").toString()).assertRefused(2, "s.json", "--copies");
+        CliRun.of("compare", a.toString(), evaluationJson(dir, "twice.json", "flip", "can", "[[1, 3], [1, 4]]").toString())
+                .assertRefused(2, "twice.json", "seed 1 appears twice");
+        CliRun.of("compare", a.toString(), evaluationJson(dir, "far.json", "flip", "can", "[[70, 3]]").toString())
+                .assertRefused(2, "a.json", "far.json", "share no seed");
     }
 
     /** A file with the fields of an evaluation's JSON that compare reads; {@code episodes} as [[seed, loops], ...]. */
