@@ -7,9 +7,9 @@ import java.util.TreeSet;
 
 /**
  * Two flip evaluations compared episode by episode on the seeds they share: the loops in a row of
- * controller B minus those of A, seed by seed. A change to the controller that leaves most
- * episodes as they were (the same seed plays the same episode until the change first matters)
- * is judged far more sharply by the paired difference than by the two means, whose standard
+ * controller B minus those of A, seed by seed. Two controllers that differ in a detail play a
+ * seed's episode alike up to the first moment the detail matters, so most episodes come out the
+ * same: the paired difference judges them far more sharply than the two means, whose standard
  * errors over 40 episodes are about 7 loops each (docs/experiments.md).
  *
  * @param seeds the seeds both evaluations ran, ascending
