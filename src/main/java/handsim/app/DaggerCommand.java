@@ -23,10 +23,11 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "dagger", mixinStandardHelpOptions = true,
         description = "Train the THROW of a task by DAgger: each round plays episodes with the learner, a teacher that tries "
-                + "throws in a twin world labels every decision the learner makes (all, or those from one rest of the object: learnerThrows) "
-                + "with the nearest throw that works (the learner's own when it does), and a fresh actor is fitted to all labels so far. Writes runs/dagger__<name>__<seed>__<time>/ with "
-                + "config.json, run.json, demonstrations.csv, rounds.csv, policies/round-NN.json and policy.json; a run killed "
-                + "at any moment continues with --resume. The teacher is needed for training only: the policy throws alone.")
+                + "throws in a twin world labels every decision the learner makes (all, or those from one rest of the object: "
+                + "learnerThrows) with the nearest throw that works (the learner's own when it does), and a fresh actor is fitted "
+                + "to all labels so far. Writes runs/dagger__<name>__<seed>__<time>/ with config.json, run.json, "
+                + "demonstrations.csv, rounds.csv, policies/round-NN.json and policy.json; a run killed at any moment "
+                + "continues with --resume. The teacher is needed for training only: the policy throws alone.")
 final class DaggerCommand implements Callable<Integer> {
 
     @Mixin

@@ -15,14 +15,13 @@ import java.util.TreeSet;
  * @param seeds the seeds both evaluations ran, ascending
  * @param meanA mean loops in a row of A on those seeds
  * @param meanB the same for B
- * @param meanDifference mean of B − A
- * @param standardError the standard error of {@code meanDifference} (the differences' sample
+ * @param standardError the standard error of {@link #meanDifference} (the differences' sample
  *     standard deviation over the square root of their number; NaN for a single seed)
  * @param changes the seeds where B's loops differ from A's, ascending
  * @param onlyA seeds A ran and B did not
  * @param onlyB seeds B ran and A did not
  */
-public record PairedLoops(List<Long> seeds, double meanA, double meanB, double meanDifference, double standardError,
+public record PairedLoops(List<Long> seeds, double meanA, double meanB, double standardError,
         List<Change> changes, List<Long> onlyA, List<Long> onlyB) {
 
     /** One seed whose loops differ. */
@@ -55,8 +54,13 @@ public record PairedLoops(List<Long> seeds, double meanA, double meanB, double m
         onlyA.removeAll(b.keySet());
         List<Long> onlyB = new ArrayList<>(new TreeSet<>(b.keySet()));
         onlyB.removeAll(a.keySet());
-        return new PairedLoops(List.copyOf(seeds), sumA / n, sumB / n, mean, Math.sqrt(variance / n), List.copyOf(changes),
+        return new PairedLoops(List.copyOf(seeds), sumA / n, sumB / n, Math.sqrt(variance / n), List.copyOf(changes),
                 List.copyOf(onlyA), List.copyOf(onlyB));
+    }
+
+    /** The mean of B − A over the shared seeds. */
+    public double meanDifference() {
+        return meanB - meanA;
     }
 
     /** Seeds where B made more loops than A. */

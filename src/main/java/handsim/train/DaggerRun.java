@@ -214,14 +214,8 @@ public final class DaggerRun {
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("learnerThrows.rest: " + e.getMessage(), e);
         }
-        Map<String, Path> files = new java.util.LinkedHashMap<>();
-        files.put("leadIn", throwsOf.leadIn());
-        files.put("leadInOpening", throwsOf.leadInOpening());
-        files.forEach((field, file) -> {
-            if (file != null && !Files.isRegularFile(file)) {
-                throw new IllegalArgumentException("learnerThrows." + field + ": no file " + file);
-            }
-        });
+        requireFile("leadIn", throwsOf.leadIn());
+        requireFile("leadInOpening", throwsOf.leadInOpening());
         ThrowPolicy leadIn;
         try {
             leadIn = ThrowPolicyFile.throwPolicy(throwsOf.leadIn(), throwsOf.leadInOpening(), null, task, envs.object(),
@@ -231,6 +225,13 @@ public final class DaggerRun {
                     : " or leadInOpening " + throwsOf.leadInOpening()) + ": " + e.getMessage(), e);
         }
         return new TeachableThrowEnv.Gate(learnerThrows, leadIn, throwsOf.maxLoops());
+    }
+
+    /** Refuses a lead-in file (when one is named) that does not exist, naming its field. */
+    private static void requireFile(String field, Path file) {
+        if (file != null && !Files.isRegularFile(file)) {
+            throw new IllegalArgumentException("learnerThrows." + field + ": no file " + file);
+        }
     }
 
     /**
