@@ -37,7 +37,7 @@ import java.util.SplittableRandom;
  * docs/experiments.md, "Planner"); among failures, by the task's reward. The search
  * stops at the first such success lying across within {@code goodAlignment}; when none of a
  * round's tries was one, the next round goes on with its own spread (an object may have rounds of
- * its own: the club's are many and narrow, docs/experiments.md, "Planner").
+ * its own: the club's are many and narrow, docs/club.md, "Planner").
  *
  * <p>Before an episode's first tick the planner may likewise choose how the hand catches the
  * throw-in ({@link #chooseThrowInCatch}): only the catch, the launch is the episode's.

@@ -44,14 +44,14 @@ class ThrowPlannerTest {
     /**
      * A seed whose club throw-in the controller's own catch (0, 0.7) drops, as does one at (0.2,
      * 0.7), and one at (0, 0.4) holds (measured: 28 catches of each throw-in of seeds 1-20,
-     * docs/experiments.md, "Planner").
+     * docs/club.md, "Planner").
      */
     static final long CLUB_THROW_IN_DROPPED = 9;
 
     /**
      * A seed whose nominal club throw flips and is dropped by the controller's own catch (0, 0.7)
      * but caught lying by one at (0.2, 0.7) (measured: 8 throws from the first decision of seeds
-     * 21-40, each caught 16 ways, docs/experiments.md, "Planner").
+     * 21-40, each caught 16 ways, docs/club.md, "Planner").
      */
     static final long CLUB_BRANCH_SEED = 32;
 
