@@ -16,6 +16,7 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.stream.Collectors;
 
 /**
@@ -175,10 +176,20 @@ final class FlipEvaluation extends TaskEvaluation {
         List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(episodeLoops);
         ArrayNode laterByRest = out.putArray("later_throws_by_rest");
         for (FlipTask.RestCount c : byRest) {
-            laterByRest.addObject().put("rest", c.rest().label()).put("early_throws", c.earlyThrows())
-                    .put("early_successes", c.earlySuccesses()).put("later_throws", c.laterThrows())
-                    .put("later_successes", c.laterSuccesses());
+            putThrowsAfter(laterByRest.addObject().put("rest", c.rest().label()), c.throwsAfter());
         }
+        Optional<FlipTask.CatchDistances> byDistance = flipTask.laterThrowsByCatchDistance(episodeLoops);
+        ObjectNode laterByDistance = out.putObject("later_throws_by_catch_distance");
+        byDistance.ifPresent(d -> {
+            laterByDistance.set("median_catch", ResultJson.vec(d.medianCatch()));
+            ArrayNode distanceBins = laterByDistance.putArray("bins");
+            for (FlipTask.DistanceCount c : d.bins()) {
+                ObjectNode o = putThrowsAfter(distanceBins.addObject().put("from_m", c.from()), c.throwsAfter());
+                if (Double.isFinite(c.to())) {
+                    o.put("to_m", c.to());
+                }
+            }
+        });
         List<FlipTask.AngleBin> bins = flipTask.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
         for (FlipTask.AngleBin b : bins) {
@@ -215,8 +226,14 @@ final class FlipEvaluation extends TaskEvaluation {
         console.println(String.format(Locale.ROOT, "throws after the first by how the catch before them left the %s (flat: under "
                 + "%.0f deg out of the palm's plane; askew: %.0f deg or more from across it), throws 2-%d / from the %dth: ", object,
                 Math.toDegrees(FlipTask.FLAT_REST), Math.toDegrees(FlipTask.ASKEW_REST), FlipTask.EARLY_THROWS, FlipTask.EARLY_THROWS + 1)
-                + byRest.stream().map(c -> String.format(Locale.ROOT, "%s %d of %d / %d of %d", c.rest().label().replace('_', ' '),
-                        c.earlySuccesses(), c.earlyThrows(), c.laterSuccesses(), c.laterThrows())).collect(Collectors.joining("; ")));
+                + byRest.stream().map(c -> c.rest().label().replace('_', ' ') + " " + earlyAndLater(c.throwsAfter()))
+                        .collect(Collectors.joining("; ")));
+        byDistance.ifPresent(d -> console.println(String.format(Locale.ROOT, "throws after the first by how far (horizontally) the "
+                + "catch before them met the %s from the run's median catch (x %.1f, z %.1f cm), throws 2-%d / from the %dth: ", object,
+                100 * d.medianCatch().x(), 100 * d.medianCatch().z(), FlipTask.EARLY_THROWS, FlipTask.EARLY_THROWS + 1)
+                + d.bins().stream().map(c -> (Double.isFinite(c.to()) ? String.format(Locale.ROOT, "%.0f-%.0f cm ", 100 * c.from(),
+                        100 * c.to()) : String.format(Locale.ROOT, "over %.0f cm ", 100 * c.from())) + earlyAndLater(c.throwsAfter()))
+                        .collect(Collectors.joining("; "))));
         console.println("by the long axis's tilt out of the horizontal when the " + object + " came back to the hand: "
                 + arrivals.stream().map(b -> String.format(Locale.ROOT, "%.0f-%.0f deg %d (%d ok, %d dropped, %d standing)",
                         Math.toDegrees(b.from()), Math.toDegrees(b.to()), b.throwsMade(), b.successes(), b.drops(), b.standing()))
@@ -257,6 +274,17 @@ final class FlipEvaluation extends TaskEvaluation {
         ObjectNode perThrow = putTally(out.putObject("per_throw"), all);
         putTally(perThrow.putObject("first_throw"), first);
         putTally(perThrow.putObject("later_throws"), later);
+    }
+
+    /** Writes the counts of some throws after catches: early_throws, early_successes, later_throws, later_successes. */
+    private static ObjectNode putThrowsAfter(ObjectNode o, FlipTask.ThrowsAfter t) {
+        return o.put("early_throws", t.earlyThrows()).put("early_successes", t.earlySuccesses()).put("later_throws", t.laterThrows())
+                .put("later_successes", t.laterSuccesses());
+    }
+
+    /** "s of n / s of n": the early throws' successes, then the later ones'. */
+    private static String earlyAndLater(FlipTask.ThrowsAfter t) {
+        return String.format(Locale.ROOT, "%d of %d / %d of %d", t.earlySuccesses(), t.earlyThrows(), t.laterSuccesses(), t.laterThrows());
     }
 
     /** "s of n succeed (r %)", or "none made". */

@@ -134,7 +134,8 @@ public final class ResultJson {
         return v == null || v.isNull() ? Double.NaN : v.isTextual() ? Double.parseDouble(v.asText()) : v.asDouble();
     }
 
-    private static JsonNode vec(Vec3 v) {
+    /** A point as a JSON array [x, y, z] (null for none). */
+    static JsonNode vec(Vec3 v) {
         return v == null ? F.nullNode() : array(v.x(), v.y(), v.z());
     }
 

@@ -19,6 +19,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.Predicate;
+import java.util.function.ToIntFunction;
 
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from the net
@@ -364,10 +365,22 @@ public final class FlipTask implements ThrowTask {
     }
 
     /**
-     * Throws made from a {@code rest} left by the hand's own catch, early (throws 2 to {@link
-     * #EARLY_THROWS}) and from the next one on, and how many of each were successes of the task.
+     * Throws made after some catches, early (throws 2 to {@link #EARLY_THROWS}) and from the next
+     * one on, and how many of each were successes of the task.
      */
-    public record RestCount(Rest rest, int earlyThrows, int earlySuccesses, int laterThrows, int laterSuccesses) {
+    public record ThrowsAfter(int earlyThrows, int earlySuccesses, int laterThrows, int laterSuccesses) {
+
+        static final ThrowsAfter NONE = new ThrowsAfter(0, 0, 0, 0);
+
+        ThrowsAfter plus(boolean early, boolean success) {
+            int ok = success ? 1 : 0;
+            return early ? new ThrowsAfter(earlyThrows + 1, earlySuccesses + ok, laterThrows, laterSuccesses)
+                    : new ThrowsAfter(earlyThrows, earlySuccesses, laterThrows + 1, laterSuccesses + ok);
+        }
+    }
+
+    /** The throws made from a {@code rest} left by the hand's own catch. */
+    public record RestCount(Rest rest, ThrowsAfter throwsAfter) {
     }
 
     /**
@@ -378,31 +391,94 @@ public final class FlipTask implements ThrowTask {
      * @param episodes each episode's loops, the throw-in first
      */
     public List<RestCount> laterThrowsByRest(List<List<LoopRecord>> episodes) {
-        int n = Rest.values().length;
-        int[] early = new int[n], earlyOk = new int[n], later = new int[n], laterOk = new int[n];
+        Rest[] rests = Rest.values();
+        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, rests.length, before ->
+                !Double.isFinite(before.catchTilt()) || !Double.isFinite(before.catchHeading()) ? -1
+                        : Rest.of(before.catchTilt(), before.catchHeading()).ordinal());
+        return Arrays.stream(rests).map(r -> new RestCount(r, counts[r.ordinal()])).toList();
+    }
+
+    /**
+     * Edges (m) of the bins of {@link #laterThrowsByCatchDistance}: a throw after a catch that met
+     * the can over 8 cm from where the loops meet it fails far more often than one after a catch
+     * within 4 cm (docs/experiments.md, Where the can comes down).
+     */
+    private static final double[] CATCH_DISTANCE_EDGES = {0.04, 0.08};
+
+    /**
+     * The throws made after a catch that met the object {@code from} to {@code to} m
+     * (horizontally) from the run's median catch ({@code to} infinite for the last bin).
+     */
+    public record DistanceCount(double from, double to, ThrowsAfter throwsAfter) {
+    }
+
+    /**
+     * The throws after each episode's first by the horizontal distance of the catch before them
+     * from {@code medianCatch}, where the run's catches meet the object (the median of each
+     * coordinate of the hand's own catches; in a run of long loops, where its settled loops meet
+     * it), in the bins of {@link #CATCH_DISTANCE_EDGES}.
+     */
+    public record CatchDistances(Vec3 medianCatch, List<DistanceCount> bins) {
+    }
+
+    /**
+     * {@link CatchDistances} of some episodes: how far from where its catches usually meet the
+     * object a catch must be to put the next throw at risk. Empty when no catch of the hand's own
+     * (after a throw) met the object.
+     *
+     * @param episodes each episode's loops, the throw-in first
+     */
+    public Optional<CatchDistances> laterThrowsByCatchDistance(List<List<LoopRecord>> episodes) {
+        List<Vec3> catches = episodes.stream().flatMap(List::stream).filter(l -> l.index() >= 1 && l.catchPoint() != null)
+                .map(LoopRecord::catchPoint).toList();
+        if (catches.isEmpty()) {
+            return Optional.empty();
+        }
+        Vec3 median = new Vec3(median(catches.stream().mapToDouble(Vec3::x).toArray()),
+                median(catches.stream().mapToDouble(Vec3::y).toArray()), median(catches.stream().mapToDouble(Vec3::z).toArray()));
+        double[] edges = CATCH_DISTANCE_EDGES;
+        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, edges.length + 1, before -> {
+            if (before.catchPoint() == null) {
+                return -1;
+            }
+            double d = Math.hypot(before.catchPoint().x() - median.x(), before.catchPoint().z() - median.z());
+            int b = 0;
+            while (b < edges.length && d >= edges[b]) {
+                b++;
+            }
+            return b;
+        });
+        List<DistanceCount> bins = new ArrayList<>();
+        for (int b = 0; b <= edges.length; b++) {
+            bins.add(new DistanceCount(b == 0 ? 0 : edges[b - 1], b == edges.length ? Double.POSITIVE_INFINITY : edges[b], counts[b]));
+        }
+        return Optional.of(new CatchDistances(median, bins));
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    }
+
+    /**
+     * The throws after each episode's first (from its second on), counted in {@code bins} bins by
+     * the catch before them: {@code binOf} gives a catch's bin, or -1 to leave the throw after it
+     * out.
+     */
+    private ThrowsAfter[] countThrowsAfterCatches(List<List<LoopRecord>> episodes, int bins, ToIntFunction<LoopRecord> binOf) {
+        ThrowsAfter[] counts = new ThrowsAfter[bins];
+        Arrays.fill(counts, ThrowsAfter.NONE);
         for (List<LoopRecord> loops : episodes) {
             for (int i = 2; i < loops.size(); i++) {
-                LoopRecord before = loops.get(i - 1);
-                if (!Double.isFinite(before.catchTilt()) || !Double.isFinite(before.catchHeading())) {
-                    continue;
-                }
-                int r = Rest.of(before.catchTilt(), before.catchHeading()).ordinal();
-                boolean ok = success(loops.get(i));
-                if (i <= EARLY_THROWS) {
-                    early[r]++;
-                    earlyOk[r] += ok ? 1 : 0;
-                } else {
-                    later[r]++;
-                    laterOk[r] += ok ? 1 : 0;
+                int b = binOf.applyAsInt(loops.get(i - 1));
+                if (b >= 0) {
+                    counts[b] = counts[b].plus(i <= EARLY_THROWS, success(loops.get(i)));
                 }
             }
         }
-        List<RestCount> out = new ArrayList<>();
-        for (Rest r : Rest.values()) {
-            int k = r.ordinal();
-            out.add(new RestCount(r, early[k], earlyOk[k], later[k], laterOk[k]));
-        }
-        return out;
+        return counts;
     }
 
     /**

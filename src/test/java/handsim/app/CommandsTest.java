@@ -418,6 +418,14 @@ class CommandsTest {
         assertEquals(later.get("throws").asInt(), byRest, summary.toString());
         assertEquals(later.get("successes").asInt(), byRestSuccesses, summary.toString());
         assertTrue(text.contains("throws after the first by how the catch before them left the can"), text);
+        // and by how far from the run's median catch the catch before them was: the same throws
+        int byDistance = 0, byDistanceSuccesses = 0;
+        for (JsonNode c : summary.get("later_throws_by_catch_distance").path("bins")) {
+            byDistance += c.get("early_throws").asInt() + c.get("later_throws").asInt();
+            byDistanceSuccesses += c.get("early_successes").asInt() + c.get("later_successes").asInt();
+        }
+        assertEquals(later.get("throws").asInt(), byDistance, summary.toString());
+        assertEquals(later.get("successes").asInt(), byDistanceSuccesses, summary.toString());
         assertTrue(text.contains("per throw (paper's method)"), text);
     }
 

@@ -162,9 +162,27 @@ class FlipTaskTest {
         // longer: throw 2 from flat-askew succeeds, 3 from raised-across is dropped, 4 follows the drop
         // (no rest: left out), 5 from raised-askew (10 deg is not flat, 5 deg is askew) succeeds,
         // 6 from flat-across (9.9, 4.9 deg) and 7 from flat-askew succeed as later throws
-        assertEquals(List.of(new FlipTask.RestCount(FlipTask.Rest.RAISED_ACROSS, 2, 1, 0, 0),
-                new FlipTask.RestCount(FlipTask.Rest.RAISED_ASKEW, 1, 1, 0, 0), new FlipTask.RestCount(FlipTask.Rest.FLAT_ACROSS, 0, 0, 1, 1),
-                new FlipTask.RestCount(FlipTask.Rest.FLAT_ASKEW, 2, 1, 1, 1)), counts);
+        assertEquals(List.of(new FlipTask.ThrowsAfter(2, 1, 0, 0), new FlipTask.ThrowsAfter(1, 1, 0, 0), new FlipTask.ThrowsAfter(0, 0, 1, 1),
+                new FlipTask.ThrowsAfter(2, 1, 1, 1)), counts.stream().map(FlipTask.RestCount::throwsAfter).toList());
+    }
+
+    @Test
+    void laterThrowsAreCountedByHowFarFromTheRunsMedianCatchTheCatchBeforeThemWas() {
+        // a flip caught at target + (dx, dy, dz); the median of the hand's catches is the target
+        // (x offsets 0 0 0 0 0 .01 .10 and z 0 ... .05: medians 0); only the horizontal distance
+        // counts (FlipTask.CATCH_DISTANCE_EDGES: under 4 cm, 4-8 cm, 8 cm and over); throws 2-5
+        // are early, from the 6th later; the throw after a drop (no catch point) is left out
+        LoopRecord near = flight(180, true, target), raisedBeside = flight(180, true, target.plus(new Vec3(0.01, 0.3, 0))),
+                mid = flight(180, true, target.plus(new Vec3(0, 0, 0.05))), far = flight(180, true, target.plus(new Vec3(0.10, 0, 0))),
+                failed = flight(90, true, target), dropped = flight(180, false, target);
+        List<LoopRecord> episode = List.of(restingAt(0), near, raisedBeside, mid, far, failed, near, dropped, near);
+        FlipTask.CatchDistances d = can.laterThrowsByCatchDistance(List.of(episode)).orElseThrow();
+        assertEquals(0, d.medianCatch().minus(target).norm(), 1e-12, "the median of each coordinate");
+        assertEquals(List.of(new FlipTask.DistanceCount(0, 0.04, new FlipTask.ThrowsAfter(2, 2, 2, 1)),
+                new FlipTask.DistanceCount(0.04, 0.08, new FlipTask.ThrowsAfter(1, 1, 0, 0)),
+                new FlipTask.DistanceCount(0.08, Double.POSITIVE_INFINITY, new FlipTask.ThrowsAfter(1, 0, 0, 0))), d.bins());
+        assertTrue(can.laterThrowsByCatchDistance(List.of(List.of(restingAt(0)), List.of(restingAt(Double.NaN)))).isEmpty(),
+                "no catch of the hand's own: nothing to measure from");
     }
 
     /** A flip caught and resting {@code tiltDeg} out of the palm's plane, {@code headingDeg} from across it. */
