@@ -184,10 +184,11 @@ final class FlipEvaluation extends TaskEvaluation {
             laterByDistance.set("median_catch", ResultJson.vec(d.medianCatch()));
             ArrayNode distanceBins = laterByDistance.putArray("bins");
             for (FlipTask.DistanceCount c : d.bins()) {
-                ObjectNode o = putThrowsAfter(distanceBins.addObject().put("from_m", c.from()), c.throwsAfter());
+                ObjectNode o = distanceBins.addObject().put("from_m", c.from());
                 if (Double.isFinite(c.to())) {
                     o.put("to_m", c.to());
                 }
+                putThrowsAfter(o, c.throwsAfter());
             }
         });
         List<FlipTask.AngleBin> bins = flipTask.byFlightRotation(allLoops);
