@@ -164,21 +164,22 @@ final class FlipEvaluation extends TaskEvaluation {
         List<List<LoopRecord>> episodeLoops = runs.stream().map(FlipRun::loops).toList();
         List<LoopRecord> allLoops = episodeLoops.stream().flatMap(List::stream).toList();
         FlipTask.ThrowTally tally = flipTask.tally(allLoops);
+        FlipTask.ReportBins report = setup.config().flipBins();
         // each episode's first throw, made from the caught throw-in, and those made from the hand's own catches
         FlipTask.ThrowTally first = flipTask.tally(allLoops.stream().filter(l -> l.index() == 1).toList());
         FlipTask.ThrowTally later = flipTask.tally(allLoops.stream().filter(l -> l.index() > 1).toList());
         putPerThrow(out, tally, first, later);
-        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(episodeLoops);
+        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(episodeLoops, report);
         ArrayNode firstByHeading = out.putArray("first_throws_by_rest_heading");
         for (FlipTask.AngleBin b : byHeading) {
             putBin(firstByHeading, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(episodeLoops);
+        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(episodeLoops, report);
         ArrayNode laterByRest = out.putArray("later_throws_by_rest");
         for (FlipTask.RestCount c : byRest) {
             putThrowsAfter(laterByRest.addObject().put("rest", c.rest().label()), c.throwsAfter());
         }
-        Optional<FlipTask.CatchDistances> byDistance = flipTask.laterThrowsByCatchDistance(episodeLoops);
+        Optional<FlipTask.CatchDistances> byDistance = flipTask.laterThrowsByCatchDistance(episodeLoops, report);
         ObjectNode laterByDistance = out.putObject("later_throws_by_catch_distance");
         byDistance.ifPresent(d -> {
             laterByDistance.set("median_catch", ResultJson.vec(d.medianCatch()));
@@ -196,7 +197,7 @@ final class FlipEvaluation extends TaskEvaluation {
         for (FlipTask.AngleBin b : bins) {
             putBin(byRotation, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(allLoops);
+        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(allLoops, report);
         ArrayNode byArrival = out.putArray("throws_by_arrival_tilt");
         for (FlipTask.ArrivalBin b : arrivals) {
             putBin(byArrival, b.from(), b.to(), b.throwsMade(), b.successes()).put("drops", b.drops()).put("standing", b.standing());
@@ -226,12 +227,12 @@ final class FlipEvaluation extends TaskEvaluation {
                         Math.toDegrees(b.to()), b.successes(), b.throwsMade())).collect(Collectors.joining("; ")));
         console.println(String.format(Locale.ROOT, "throws after the first by how the catch before them left the %s (flat: under "
                 + "%.0f deg out of the palm's plane; askew: %.0f deg or more from across it), throws 2-%d / from the %dth: ", object,
-                Math.toDegrees(FlipTask.FLAT_REST), Math.toDegrees(FlipTask.ASKEW_REST), FlipTask.EARLY_THROWS, FlipTask.EARLY_THROWS + 1)
+                Math.toDegrees(FlipTask.FLAT_REST), Math.toDegrees(FlipTask.ASKEW_REST), report.earlyThrows(), report.earlyThrows() + 1)
                 + byRest.stream().map(c -> c.rest().label().replace('_', ' ') + " " + earlyAndLater(c.throwsAfter()))
                         .collect(Collectors.joining("; ")));
         byDistance.ifPresent(d -> console.println(String.format(Locale.ROOT, "throws after the first by how far (horizontally) the "
                 + "catch before them met the %s from the run's median catch (x %.1f, z %.1f cm), throws 2-%d / from the %dth: ", object,
-                100 * d.medianCatch().x(), 100 * d.medianCatch().z(), FlipTask.EARLY_THROWS, FlipTask.EARLY_THROWS + 1)
+                100 * d.medianCatch().x(), 100 * d.medianCatch().z(), report.earlyThrows(), report.earlyThrows() + 1)
                 + d.bins().stream().map(c -> (Double.isFinite(c.to()) ? String.format(Locale.ROOT, "%.0f-%.0f cm ", 100 * c.from(),
                         100 * c.to()) : String.format(Locale.ROOT, "over %.0f cm ", 100 * c.from())) + earlyAndLater(c.throwsAfter()))
                         .collect(Collectors.joining("; "))));

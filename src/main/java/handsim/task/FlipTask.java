@@ -262,22 +262,44 @@ public final class FlipTask implements ThrowTask {
     public record ArrivalBin(double from, double to, int throwsMade, int successes, int drops, int standing) {
     }
 
-    /** Width of the arrival-tilt and rest-heading bins: six bins from 0 to 90 deg. */
-    public static final double ANGLE_BIN = Math.toRadians(15);
+    /**
+     * The bins of a flip run's counts (configs/evaluation.json {@code flipBins}).
+     *
+     * @param angle width (rad) of the arrival-tilt and rest-heading bins, a whole share of 90 deg
+     * @param earlyThrows throws 2 to this one are a loop's early throws, made while the rests settle
+     * @param catchDistanceEdges rising edges (m) of the bins of {@link #laterThrowsByCatchDistance}
+     */
+    public record ReportBins(double angle, int earlyThrows, double[] catchDistanceEdges) {
+
+        public ReportBins {
+            catchDistanceEdges = catchDistanceEdges.clone();
+        }
+
+        @Override
+        public double[] catchDistanceEdges() {
+            return catchDistanceEdges.clone();
+        }
+
+        /** The angle bins from 0 to 90 deg. */
+        int angleBins() {
+            return (int) Math.round(Math.PI / 2 / angle);
+        }
+    }
 
     /**
      * The throws of {@code loops} that came back to the hand (loop 0 and throws without a first
      * touch left out) binned by their arrival tilt, all six bins from 0 to 90 deg: whether a
      * policy's failures are cans that arrive end-first (a wrong turn) or lying ones the catch lost.
      */
-    public List<ArrivalBin> byArrivalTilt(List<LoopRecord> loops) {
-        int bins = (int) Math.round(Math.PI / 2 / ANGLE_BIN);
+    public List<ArrivalBin> byArrivalTilt(List<LoopRecord> loops, ReportBins report) {
+        double width = report.angle();
+        int bins = report.angleBins();
         int[] made = new int[bins], succeeded = new int[bins], dropped = new int[bins], standing = new int[bins];
         for (LoopRecord l : loops) {
             if (l.index() == 0 || !Double.isFinite(l.arrivalTilt())) {
                 continue;
             }
-            int b = Math.min(bins - 1, (int) (l.arrivalTilt() / ANGLE_BIN));
+            int b = Math.min(bins - 1, (int) (l.arrivalTilt() / width));
             made[b]++;
             succeeded[b] += success(l) ? 1 : 0;
             dropped[b] += l.caught() ? 0 : 1;
@@ -285,7 +307,7 @@ public final class FlipTask implements ThrowTask {
         }
         List<ArrivalBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {
-            out.add(new ArrivalBin(b * ANGLE_BIN, (b + 1) * ANGLE_BIN, made[b], succeeded[b], dropped[b], standing[b]));
+            out.add(new ArrivalBin(b * width, (b + 1) * width, made[b], succeeded[b], dropped[b], standing[b]));
         }
         return out;
     }
@@ -297,20 +319,21 @@ public final class FlipTask implements ThrowTask {
      *
      * @param episodes each episode's loops, the throw-in first
      */
-    public List<AngleBin> firstThrowsByRestHeading(List<List<LoopRecord>> episodes) {
-        int bins = (int) Math.round(Math.PI / 2 / ANGLE_BIN);
+    public List<AngleBin> firstThrowsByRestHeading(List<List<LoopRecord>> episodes, ReportBins report) {
+        double width = report.angle();
+        int bins = report.angleBins();
         int[] made = new int[bins], succeeded = new int[bins];
         for (List<LoopRecord> loops : episodes) {
             if (loops.size() < 2 || !Double.isFinite(loops.get(0).catchHeading())) {
                 continue;
             }
-            int b = Math.min(bins - 1, (int) (loops.get(0).catchHeading() / ANGLE_BIN));
+            int b = Math.min(bins - 1, (int) (loops.get(0).catchHeading() / width));
             made[b]++;
             succeeded[b] += success(loops.get(1)) ? 1 : 0;
         }
         List<AngleBin> out = new ArrayList<>();
         for (int b = 0; b < bins; b++) {
-            out.add(new AngleBin(b * ANGLE_BIN, (b + 1) * ANGLE_BIN, made[b], succeeded[b]));
+            out.add(new AngleBin(b * width, (b + 1) * width, made[b], succeeded[b]));
         }
         return out;
     }
@@ -319,8 +342,6 @@ public final class FlipTask implements ThrowTask {
     public static final double FLAT_REST = Math.toRadians(10);
     /** A rest this far or more from across the palm lies askew. */
     public static final double ASKEW_REST = Math.toRadians(5);
-    /** Throws 2 to this one are the loop's early throws, made while the can's rests settle. */
-    public static final int EARLY_THROWS = 5;
 
     /** How a long object lay in the hand when the catch before a throw was judged: raised or flat, across or askew. */
     public enum Rest {
@@ -365,7 +386,7 @@ public final class FlipTask implements ThrowTask {
     }
 
     /**
-     * Throws made after some catches, early (throws 2 to {@link #EARLY_THROWS}) and from the next
+     * Throws made after some catches, early (throws 2 to {@link ReportBins#earlyThrows}) and from the next
      * one on, and how many of each were successes of the task.
      */
     public record ThrowsAfter(int earlyThrows, int earlySuccesses, int laterThrows, int laterSuccesses) {
@@ -390,20 +411,13 @@ public final class FlipTask implements ThrowTask {
      *
      * @param episodes each episode's loops, the throw-in first
      */
-    public List<RestCount> laterThrowsByRest(List<List<LoopRecord>> episodes) {
+    public List<RestCount> laterThrowsByRest(List<List<LoopRecord>> episodes, ReportBins report) {
         Rest[] rests = Rest.values();
-        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, rests.length, before ->
+        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, report.earlyThrows(), rests.length, before ->
                 !Double.isFinite(before.catchTilt()) || !Double.isFinite(before.catchHeading()) ? -1
                         : Rest.of(before.catchTilt(), before.catchHeading()).ordinal());
         return Arrays.stream(rests).map(r -> new RestCount(r, counts[r.ordinal()])).toList();
     }
-
-    /**
-     * Edges (m) of the bins of {@link #laterThrowsByCatchDistance}: a throw after a catch that met
-     * the can over 8 cm from where the loops meet it fails far more often than one after a catch
-     * within 4 cm (docs/experiments.md, Where the can comes down).
-     */
-    private static final double[] CATCH_DISTANCE_EDGES = {0.04, 0.08};
 
     /**
      * The throws made after a catch that met the object {@code from} to {@code to} m
@@ -416,7 +430,7 @@ public final class FlipTask implements ThrowTask {
      * The throws after each episode's first by the horizontal distance of the catch before them
      * from {@code medianCatch}, where the run's catches meet the object (the median of each
      * coordinate of the hand's own catches; in a run of long loops, where its settled loops meet
-     * it), in the bins of {@link #CATCH_DISTANCE_EDGES}.
+     * it), in the bins of {@link ReportBins#catchDistanceEdges}.
      */
     public record CatchDistances(Vec3 medianCatch, List<DistanceCount> bins) {
     }
@@ -428,7 +442,7 @@ public final class FlipTask implements ThrowTask {
      *
      * @param episodes each episode's loops, the throw-in first
      */
-    public Optional<CatchDistances> laterThrowsByCatchDistance(List<List<LoopRecord>> episodes) {
+    public Optional<CatchDistances> laterThrowsByCatchDistance(List<List<LoopRecord>> episodes, ReportBins report) {
         List<Vec3> catches = episodes.stream().flatMap(List::stream).filter(l -> l.index() >= 1 && l.catchPoint() != null)
                 .map(LoopRecord::catchPoint).toList();
         if (catches.isEmpty()) {
@@ -436,8 +450,8 @@ public final class FlipTask implements ThrowTask {
         }
         Vec3 median = new Vec3(median(catches.stream().mapToDouble(Vec3::x).toArray()),
                 median(catches.stream().mapToDouble(Vec3::y).toArray()), median(catches.stream().mapToDouble(Vec3::z).toArray()));
-        double[] edges = CATCH_DISTANCE_EDGES;
-        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, edges.length + 1, before -> {
+        double[] edges = report.catchDistanceEdges();
+        ThrowsAfter[] counts = countThrowsAfterCatches(episodes, report.earlyThrows(), edges.length + 1, before -> {
             if (before.catchPoint() == null) {
                 return -1;
             }
@@ -464,17 +478,18 @@ public final class FlipTask implements ThrowTask {
 
     /**
      * The throws after each episode's first (from its second on), counted in {@code bins} bins by
-     * the catch before them: {@code binOf} gives a catch's bin, or -1 to leave the throw after it
-     * out.
+     * the catch before them, early up to throw {@code earlyThrows}: {@code binOf} gives a catch's
+     * bin, or -1 to leave the throw after it out.
      */
-    private ThrowsAfter[] countThrowsAfterCatches(List<List<LoopRecord>> episodes, int bins, ToIntFunction<LoopRecord> binOf) {
+    private ThrowsAfter[] countThrowsAfterCatches(List<List<LoopRecord>> episodes, int earlyThrows, int bins,
+            ToIntFunction<LoopRecord> binOf) {
         ThrowsAfter[] counts = new ThrowsAfter[bins];
         Arrays.fill(counts, ThrowsAfter.NONE);
         for (List<LoopRecord> loops : episodes) {
             for (int i = 2; i < loops.size(); i++) {
                 int b = binOf.applyAsInt(loops.get(i - 1));
                 if (b >= 0) {
-                    counts[b] = counts[b].plus(i <= EARLY_THROWS, success(loops.get(i)));
+                    counts[b] = counts[b].plus(i <= earlyThrows, success(loops.get(i)));
                 }
             }
         }

@@ -34,6 +34,8 @@ class FlipTaskTest {
     private final FlipTask can = (FlipTask) TestSupport.tasks().create("flip", "can");
     private final FlipTask club = (FlipTask) TestSupport.tasks().create("flip", "club");
     private final Vec3 target = TestSupport.neutralPalm().plus(new Vec3(0, 0.12, 0));
+    /** The bins of configs/evaluation.json's flipBins: 15 deg, throws 2-5 early, edges 4 and 8 cm. */
+    private static final FlipTask.ReportBins BINS = new FlipTask.ReportBins(Math.toRadians(15), 5, new double[] {0.04, 0.08});
 
     private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where) {
         return flight(rotationDeg, caught, where, caught ? 10 : Double.NaN);
@@ -92,7 +94,7 @@ class FlipTaskTest {
         LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
                 Double.NaN, Double.NaN, Double.NaN, null, Math.toRadians(10), 0, 0, 0, 1);
         var bins = can.byArrivalTilt(List.of(throwIn, arriving(5, true, 10), arriving(14, false, 0), arriving(70, true, 80),
-                arriving(89, false, 0), arriving(90, true, 85), arriving(Double.NaN, false, 0)));
+                arriving(89, false, 0), arriving(90, true, 85), arriving(Double.NaN, false, 0)), BINS);
         assertEquals(6, bins.size());
         assertEquals(Math.toRadians(75), bins.get(5).from(), 1e-12);
         assertEquals(Math.toRadians(90), bins.get(5).to(), 1e-12);
@@ -135,7 +137,7 @@ class FlipTaskTest {
                 List.of(restingAt(50), flight(180, true, target)),
                 List.of(restingAt(90), flight(180, false, target)),
                 List.of(restingAt(Double.NaN)),
-                List.of(restingAt(20))));
+                List.of(restingAt(20))), BINS);
         assertEquals(6, bins.size());
         assertEquals(Math.toRadians(45), bins.get(3).from(), 1e-12);
         assertEquals(Math.toRadians(60), bins.get(3).to(), 1e-12);
@@ -156,7 +158,7 @@ class FlipTaskTest {
         List<LoopRecord> episode = List.of(restingAt(0), raisedAcross, flatAskew, failed);
         List<LoopRecord> longer = List.of(restingAt(0), flatAskew, raisedAcross, dropped, raisedAskew, flatAcross, flatAskew,
                 raisedAcross);
-        List<FlipTask.RestCount> counts = can.laterThrowsByRest(List.of(episode, longer));
+        List<FlipTask.RestCount> counts = can.laterThrowsByRest(List.of(episode, longer), BINS);
         assertEquals(List.of(FlipTask.Rest.values()), counts.stream().map(FlipTask.RestCount::rest).toList(), "all four rests, in order");
         // episode: throw 2 from raised-across succeeds, throw 3 from flat-askew fails (no flip);
         // longer: throw 2 from flat-askew succeeds, 3 from raised-across is dropped, 4 follows the drop
@@ -170,18 +172,18 @@ class FlipTaskTest {
     void laterThrowsAreCountedByHowFarFromTheRunsMedianCatchTheCatchBeforeThemWas() {
         // a flip caught at target + (dx, dy, dz); the median of the hand's catches is the target
         // (x offsets 0 0 0 0 0 .01 .10 and z 0 ... .05: medians 0); only the horizontal distance
-        // counts (FlipTask.CATCH_DISTANCE_EDGES: under 4 cm, 4-8 cm, 8 cm and over); throws 2-5
+        // counts (BINS: under 4 cm, 4-8 cm, 8 cm and over); throws 2-5
         // are early, from the 6th later; the throw after a drop (no catch point) is left out
         LoopRecord near = flight(180, true, target), raisedBeside = flight(180, true, target.plus(new Vec3(0.01, 0.3, 0))),
                 mid = flight(180, true, target.plus(new Vec3(0, 0, 0.05))), far = flight(180, true, target.plus(new Vec3(0.10, 0, 0))),
                 failed = flight(90, true, target), dropped = flight(180, false, target);
         List<LoopRecord> episode = List.of(restingAt(0), near, raisedBeside, mid, far, failed, near, dropped, near);
-        FlipTask.CatchDistances d = can.laterThrowsByCatchDistance(List.of(episode)).orElseThrow();
+        FlipTask.CatchDistances d = can.laterThrowsByCatchDistance(List.of(episode), BINS).orElseThrow();
         assertEquals(0, d.medianCatch().minus(target).norm(), 1e-12, "the median of each coordinate");
         assertEquals(List.of(new FlipTask.DistanceCount(0, 0.04, new FlipTask.ThrowsAfter(2, 2, 2, 1)),
                 new FlipTask.DistanceCount(0.04, 0.08, new FlipTask.ThrowsAfter(1, 1, 0, 0)),
                 new FlipTask.DistanceCount(0.08, Double.POSITIVE_INFINITY, new FlipTask.ThrowsAfter(1, 0, 0, 0))), d.bins());
-        assertTrue(can.laterThrowsByCatchDistance(List.of(List.of(restingAt(0)), List.of(restingAt(Double.NaN)))).isEmpty(),
+        assertTrue(can.laterThrowsByCatchDistance(List.of(List.of(restingAt(0)), List.of(restingAt(Double.NaN))), BINS).isEmpty(),
                 "no catch of the hand's own: nothing to measure from");
     }
 
