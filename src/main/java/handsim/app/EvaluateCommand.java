@@ -16,6 +16,7 @@ import handsim.report.Outputs;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
+import handsim.task.FlipTask;
 import handsim.task.HeightTask;
 import handsim.task.StateVector;
 import handsim.task.Tasks;
@@ -25,6 +26,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.function.Function;
 import picocli.CommandLine.Command;
@@ -76,6 +78,11 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "{\"boxes\": [[x, y, z], ...]} (one per trial, m, world)")
     Path goals;
 
+    @Option(names = "--task-set", paramLabel = "KEY=VALUE", description = "override a field of the task's configs/tasks/TASK.json "
+            + "for this run, e.g. --task-set 'objects.can.armRest.phases=[\"GOBACK\"]', or leave an optional one out with "
+            + "--task-set objects.can.armRest=null (repeatable; dotted paths; part of the run's signature)")
+    List<String> taskOverrides = List.of();
+
     @Option(names = "--workers", paramLabel = "N",
             description = "episodes run in parallel, each worker with its own engine (default: all local cores); "
                     + "results do not depend on it")
@@ -118,6 +125,8 @@ final class EvaluateCommand implements Callable<Integer> {
     private String controller;
     private String object;
     private EvaluationConfig config;
+    /** The shipped tasks with --task-set applied. */
+    private Tasks tasks;
     private HeightTask.Config height;
     /** The episode's animation export, or null. */
     private RunExport exported;
@@ -129,9 +138,11 @@ final class EvaluateCommand implements Callable<Integer> {
         controller = who.controller();
         object = episodeOptions.object;
         config = EvaluationConfig.load(Home.resolve("configs/evaluation.json"));
-        height = Tasks.heightConfig();
+        tasks = Wiring.tasks().withOverrides(task, RunOptions.keyValues("--task-set", taskOverrides));
+        tasks.create(task, object); // a bad --task-set, or an object the task cannot take, fails here
+        height = HeightTask.Config.parse(tasks.config("height"));
         loops = loopsOption != null ? loopsOption : copies != null ? config.sensitivityThrows()
-                : task.equals("flip") ? Tasks.flipConfig().evaluationLoops() : height.evaluationThrows();
+                : task.equals("flip") ? FlipTask.Config.parse(tasks.config("flip")).evaluationLoops() : height.evaluationThrows();
         validate();
         EpisodeJournal journal = null;
         if (json != null) {
@@ -154,12 +165,15 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", object);
+        if (!taskOverrides.isEmpty()) {
+            out.set("task_set", taskSet());
+        }
         out.put("seed", episodeOptions.seed);
         out.put("workers", workers);
         EvaluationRequest request = new EvaluationRequest(task, object, controller, who.plan, episodeOptions.seed, loops, episodes, tests,
                 throwHeight, goals != null && !task.equals("box") ? GoalsFile.heights(goals, height) : null,
                 goals != null && task.equals("box") ? GoalsFile.boxes(goals) : null, copies, nudge, csv, plot);
-        EvaluationSetup setup = new EvaluationSetup(Wiring.controllerConfig(), Wiring.object(object), Wiring.tasks(),
+        EvaluationSetup setup = new EvaluationSetup(Wiring.controllerConfig(), Wiring.object(object), tasks,
                 Wiring.episodeLimits(), Wiring.launches(), config, throwPolicies(), who.plan ? Wiring.plannerConfig(object) : null,
                 Wiring::twinSimulator, exported, journal, System.out);
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(Wiring.model(null), Wiring.simConfig(), workers)) {
@@ -188,9 +202,10 @@ final class EvaluateCommand implements Callable<Integer> {
     }
 
     /**
-     * What makes this run's episodes what they are: the options that change a result (not
-     * --workers, --episodes or --tests: more episodes of the same run keep the first ones) and
-     * the SHA-256 of every file under configs/ and models/ and of --policy and --goals.
+     * What makes this run's episodes what they are: the options that change a result (--task-set
+     * among them; not --workers, --episodes or --tests: more episodes of the same run keep the
+     * first ones) and the SHA-256 of every file under configs/ and models/ and of --policy and
+     * --goals.
      */
     private ObjectNode signature() throws IOException {
         ObjectNode s = JsonNodeFactory.instance.objectNode();
@@ -203,6 +218,9 @@ final class EvaluateCommand implements Callable<Integer> {
         Path rest = who.restFile(object); // null for the nominal controller
         if (rest != null) { // absent when none: a run without one keeps the signature it had without the option
             s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
+        }
+        if (!taskOverrides.isEmpty()) { // absent when none, as rest_policy
+            s.set("task_set", taskSet());
         }
         s.put("throw_height", throwHeight);
         s.put("copies", copies);
@@ -262,6 +280,13 @@ final class EvaluateCommand implements Callable<Integer> {
         new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
     }
 
+    /** The --task-set fields, in order. */
+    private ObjectNode taskSet() {
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
+        RunOptions.keyValues("--task-set", taskOverrides).forEach(o::put);
+        return o;
+    }
+
     /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
     private Function<ThrowTask, ThrowPolicy> throwPolicies() {
         if (controller.equals("nominal")) {
@@ -281,7 +306,7 @@ final class EvaluateCommand implements Callable<Integer> {
         ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.loadOpening(opening);
         Path rest = who.restFile(object);
         ThrowPolicyFile loadedRest = rest == null ? null : ThrowPolicyFile.loadRest(rest);
-        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, Wiring.tasks().create(task, object), spec, hand); // a policy for another task or object fails here
+        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, tasks.create(task, object), spec, hand); // a policy for another task or object fails here
         return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, t, spec, hand);
     }
 }

@@ -51,11 +51,16 @@ final class RunOptions {
 
     /** {@code --set} options as dotted keys to JSON values, in order; a malformed one is named. */
     static Map<String, String> keyValues(List<String> overrides) {
+        return keyValues("--set", overrides);
+    }
+
+    /** Options {@code option} KEY=VALUE as dotted keys to JSON values, in order; a malformed one is named. */
+    static Map<String, String> keyValues(String option, List<String> overrides) {
         Map<String, String> kv = new LinkedHashMap<>();
         for (String o : overrides) {
             int eq = o.indexOf('=');
             if (eq <= 0) {
-                throw new IllegalArgumentException("--set takes KEY=VALUE, got \"" + o + "\"");
+                throw new IllegalArgumentException(option + " takes KEY=VALUE, got \"" + o + "\"");
             }
             kv.put(o.substring(0, eq), o.substring(eq + 1));
         }

@@ -350,7 +350,8 @@ public final class Json {
      * existing objects ({@code ddpg.actorLr=1e-4}); values are parsed as JSON when they parse and
      * taken as strings otherwise. A key may name a field the file leaves out (an optional one, such
      * as {@code training.criticWarmupDecisions}): the schema's parser, which rejects fields it does
-     * not know, then catches a misspelt key, so a typo never silently does nothing.
+     * not know, then catches a misspelt key, so a typo never silently does nothing. The value
+     * {@code null} removes the field: an optional one is then left out, a required one missed.
      */
     public static JsonNode withOverrides(String source, JsonNode root, Map<String, String> overrides) {
         JsonNode copy = root.deepCopy();
@@ -360,11 +361,16 @@ public final class Json {
             for (int i = 0; i < parts.length - 1; i++) {
                 parent = parent.get(parts[i]);
                 if (parent == null || !parent.isObject()) {
-                    throw new ConfigException(source + ": --set " + e.getKey() + ": no object \"" + parts[i] + "\"");
+                    throw new ConfigException(source + ": overriding " + e.getKey() + ": no object \"" + parts[i] + "\" to set a field in");
                 }
             }
             String leaf = parts[parts.length - 1];
-            ((ObjectNode) parent).set(leaf, parseValue(e.getValue()));
+            JsonNode value = parseValue(e.getValue());
+            if (value.isNull()) {
+                ((ObjectNode) parent).remove(leaf); // KEY=null leaves an optional field out
+            } else {
+                ((ObjectNode) parent).set(leaf, value);
+            }
         }
         return copy;
     }

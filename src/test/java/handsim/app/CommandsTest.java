@@ -472,6 +472,30 @@ class CommandsTest {
     }
 
     @Test
+    void taskSetRunsAVariantOfTheTasksFileAndRecordsIt(@TempDir Path dir) throws Exception {
+        // configs/tasks/height.json evaluates 10 throws an episode unless --loops says otherwise;
+        // --task-set evaluationThrows=2 makes it 2, and the summary says what was set
+        Path json = dir.resolve("height.json");
+        runPrinting("evaluate", "--task", "height", "--episodes", "1", "--seed", "1", "--workers", "1",
+                "--task-set", "evaluationThrows=2", "--json", json.toString());
+        JsonNode summary = Json.load(json).node();
+        assertEquals(2, summary.get("loops_per_episode").asInt());
+        assertEquals("2", summary.get("task_set").get("evaluationThrows").asText());
+        assertTrue(summary.get("provenance").get("command").asText().contains("--task-set evaluationThrows=2"),
+                summary.get("provenance").toString());
+        // a misspelt field, a path through no object, a bad value: refused by name, nothing written
+        Path none = dir.resolve("none.json");
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--task-set", "objects.can.armRst=1", "--json", none.toString())
+                .assertRefused(2, "configs/tasks/flip.json", "objects.can.armRst: unknown field");
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--task-set", "objects.cann.armRest=null", "--json", none.toString())
+                .assertRefused(2, "objects.cann.armRest", "no object \"cann\"");
+        CliRun.of("evaluate", "--task", "flip", "--object", "can", "--task-set", "objects.can.armRest.phases=[\"SOON\"]")
+                .assertRefused(2, "objects.can.armRest.phases", "SOON");
+        CliRun.of("evaluate", "--task", "height", "--task-set", "evaluationThrows").assertRefused(2, "--task-set takes KEY=VALUE", "evaluationThrows");
+        assertTrue(Files.notExists(none) && Files.notExists(dir.resolve("none.json.episodes.jsonl")), "nothing half-written");
+    }
+
+    @Test
     void boxEvaluationOfFewTestsWritesStrictJsonWithNoRateForAnEmptyBand(@TempDir Path dir) throws Exception {
         Path json = dir.resolve("box.json");
         String text = runPrinting("evaluate", "--task", "box", "--tests", "1", "--seed", "1", "--workers", "1",
