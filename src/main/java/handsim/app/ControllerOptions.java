@@ -3,26 +3,39 @@ package handsim.app;
 import handsim.train.ThrowPolicyFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import handsim.task.Tasks;
 import java.util.List;
+import java.util.Map;
 import picocli.CommandLine.Option;
 
 /**
  * Who throws, declared once for every command that runs a catch-and-throw loop ({@code
- * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at, the
- * nominal or a learned controller, the learned controller's policy (and the flip's opening and
- * rest policies) and the throw planner. Left out, an option is null (false for {@code --plan});
- * {@link #task()} and {@link #controller()} give the defaults.
+ * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at (and fields
+ * of its file changed), the nominal or a learned controller, the learned controller's policy (and
+ * the flip's opening and rest policies) and the throw planner. Left out, an option is null (false
+ * for {@code --plan}, empty for {@code --task-set}); {@link #task()} and {@link #controller()}
+ * give the defaults.
  */
 final class ControllerOptions {
 
     /**
-     * The policy files given for a learned controller (null: not given) and whether the planner
-     * chooses the flip's throws: what the viewer's scenes are opened with.
+     * The policy files given for a learned controller (null: not given), whether the planner
+     * chooses the flip's throws and, per task name, the fields of its file changed: what the
+     * viewer's scenes are opened with.
      */
-    record Choice(Path policy, Path opening, Path rest, boolean plan) {
+    record Choice(Path policy, Path opening, Path rest, boolean plan, Map<String, Map<String, String>> taskSet) {
 
-        /** Nothing given: the shipped policies, no planner. */
-        static final Choice SHIPPED = new Choice(null, null, null, false);
+        /** Nothing given: the shipped policies and tasks, no planner. */
+        static final Choice SHIPPED = new Choice(null, null, null, false, Map.of());
+
+        /** The shipped tasks with {@link #taskSet} applied. */
+        Tasks tasks() {
+            Tasks tasks = Wiring.tasks();
+            for (Map.Entry<String, Map<String, String>> e : taskSet.entrySet()) {
+                tasks = tasks.withOverrides(e.getKey(), e.getValue());
+            }
+            return tasks;
+        }
     }
 
     @Option(names = "--task", description = "height, box or flip (default: height)")
@@ -47,6 +60,11 @@ final class ControllerOptions {
                     + "models/policies/flip-<object>-rest.json when it exists; with --policy, none); with --plan, the planner's "
                     + "tries go on with it too")
     Path restPolicy;
+
+    @Option(names = "--task-set", paramLabel = "KEY=VALUE", description = "change a field of the task's configs/tasks/TASK.json "
+            + "for this run, e.g. --task-set 'objects.can.armRest.phases=[\"GOBACK\"]', or leave an optional one out with "
+            + "--task-set objects.can.armRest=null (repeatable; dotted paths)")
+    List<String> taskSet = List.of();
 
     @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
             + "world first (handsim.evaluation.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
@@ -81,10 +99,26 @@ final class ControllerOptions {
         validateFlipPolicies();
     }
 
-    /** Refuses an opening or rest policy where no learned flip is thrown, and one whose file does not exist (a typo). */
+    /**
+     * Refuses an opening or rest policy where no learned flip is thrown, one whose file does not
+     * exist (a typo), and a --task-set the task's file does not take.
+     */
     void validateFlipPolicies() {
         refuseMisplaced("--opening-policy", openingPolicy);
         refuseMisplaced("--rest-policy", restPolicy);
+        if (!taskSet.isEmpty()) {
+            tasks().check(task());
+        }
+    }
+
+    /** The --task-set fields, in order (empty when none). */
+    Map<String, String> taskSetFields() {
+        return RunOptions.keyValues("--task-set", taskSet);
+    }
+
+    /** The shipped tasks with --task-set applied to --task's file. */
+    Tasks tasks() {
+        return choice().tasks();
     }
 
     private void refuseMisplaced(String option, Path file) {
@@ -99,7 +133,8 @@ final class ControllerOptions {
 
     /** The options as the viewer's scenes take them. */
     Choice choice() {
-        return new Choice(policy, openingPolicy, restPolicy, plan);
+        Map<String, String> fields = taskSetFields();
+        return new Choice(policy, openingPolicy, restPolicy, plan, fields.isEmpty() ? Map.of() : Map.of(task(), fields));
     }
 
     /** The learned controller's policy file: --policy, or the one shipped for the task and {@code object}. */

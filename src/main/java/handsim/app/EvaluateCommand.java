@@ -26,7 +26,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
-import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.function.Function;
 import picocli.CommandLine.Command;
@@ -77,11 +76,6 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "goals to use instead of seeded ones: {\"heights\": [h, ...]} (one per throw, in turn) or "
                     + "{\"boxes\": [[x, y, z], ...]} (one per trial, m, world)")
     Path goals;
-
-    @Option(names = "--task-set", paramLabel = "KEY=VALUE", description = "override a field of the task's configs/tasks/TASK.json "
-            + "for this run, e.g. --task-set 'objects.can.armRest.phases=[\"GOBACK\"]', or leave an optional one out with "
-            + "--task-set objects.can.armRest=null (repeatable; dotted paths; part of the run's signature)")
-    List<String> taskOverrides = List.of();
 
     @Option(names = "--workers", paramLabel = "N",
             description = "episodes run in parallel, each worker with its own engine (default: all local cores); "
@@ -138,7 +132,7 @@ final class EvaluateCommand implements Callable<Integer> {
         controller = who.controller();
         object = episodeOptions.object;
         config = EvaluationConfig.load(Home.resolve("configs/evaluation.json"));
-        tasks = Wiring.tasks().withOverrides(task, RunOptions.keyValues("--task-set", taskOverrides));
+        tasks = who.tasks();
         tasks.create(task, object); // a bad --task-set, or an object the task cannot take, fails here
         height = HeightTask.Config.parse(tasks.config("height"));
         loops = loopsOption != null ? loopsOption : copies != null ? config.sensitivityThrows()
@@ -165,7 +159,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", object);
-        if (!taskOverrides.isEmpty()) {
+        if (!who.taskSet.isEmpty()) {
             out.set("task_set", taskSet());
         }
         out.put("seed", episodeOptions.seed);
@@ -219,7 +213,7 @@ final class EvaluateCommand implements Callable<Integer> {
         if (rest != null) { // absent when none: a run without one keeps the signature it had without the option
             s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
         }
-        if (!taskOverrides.isEmpty()) { // absent when none, as rest_policy
+        if (!who.taskSet.isEmpty()) { // absent when none, as rest_policy
             s.set("task_set", taskSet());
         }
         s.put("throw_height", throwHeight);
@@ -283,7 +277,7 @@ final class EvaluateCommand implements Callable<Integer> {
     /** The --task-set fields, in order. */
     private ObjectNode taskSet() {
         ObjectNode o = JsonNodeFactory.instance.objectNode();
-        RunOptions.keyValues("--task-set", taskOverrides).forEach(o::put);
+        who.taskSetFields().forEach(o::put);
         return o;
     }
 

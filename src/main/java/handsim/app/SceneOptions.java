@@ -12,7 +12,6 @@ import handsim.task.Goal;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
 import handsim.task.ServoLoop;
-import handsim.task.Tasks;
 import handsim.viewer.ViewerConfig;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -38,13 +37,16 @@ final class SceneOptions {
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2", description = "height task: apex goal, m")
     double throwHeight;
 
-    /** Refuses a duration out of (0, 600] s, a goal height the height task does not allow and a misplaced opening or rest policy. */
+    /**
+     * Refuses a duration out of (0, 600] s, a goal height the height task does not allow, a
+     * misplaced opening or rest policy and a bad --task-set.
+     */
     void validate() {
         who.validateFlipPolicies();
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
         }
-        HeightTask.Config height = Tasks.heightConfig();
+        HeightTask.Config height = HeightTask.Config.parse(who.tasks().config("height"));
         if (!height.allowsGoal(throwHeight)) {
             throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }

@@ -44,6 +44,8 @@ final class ShippedScenes implements SceneCatalog {
     private final HeightGoals goals;
     private final HeightControl heightControl;
     private final ControllerOptions.Choice who;
+    /** The tasks with the fields {@code who} changed. */
+    private final Tasks tasks;
     private final List<String> objects;
 
     /**
@@ -56,6 +58,7 @@ final class ShippedScenes implements SceneCatalog {
         this.goals = goals;
         this.heightControl = heightControl;
         this.who = who;
+        this.tasks = who.tasks();
         this.objects = listObjects();
     }
 
@@ -118,11 +121,11 @@ final class ShippedScenes implements SceneCatalog {
         }
         ThrowTask task;
         try {
-            task = shown.task().equals("height") ? Wiring.heightTask(goals) : Wiring.tasks().create(shown.task(), shown.object());
+            task = shown.task().equals("height") ? tasks.height(goals) : tasks.create(shown.task(), shown.object());
         } catch (IllegalArgumentException | ConfigException e) {
             notes.add(e.getMessage() + ": showing the height task");
             shown = shown.withTask("height");
-            task = Wiring.heightTask(goals);
+            task = tasks.height(goals);
         }
         ThrowTask chosen = task;
         ThrowPolicy throwPolicy = obs -> chosen.nominalThrow();

@@ -63,6 +63,16 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
         };
     }
 
+    /** Reads task {@code name}'s file as these tasks do: a bad override fails here, naming its field and value. */
+    public void check(String name) {
+        switch (name) {
+            case "height" -> HeightTask.Config.parse(config(name));
+            case "box" -> BoxTask.Config.parse(config(name));
+            case "flip" -> FlipTask.Config.parse(config(name));
+            default -> throw new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
+        }
+    }
+
     /** The height task aiming at {@code goals}, or at its config's goal range when null. */
     public HeightTask height(HeightGoals goals) {
         HeightTask.Config c = HeightTask.Config.parse(config("height"));

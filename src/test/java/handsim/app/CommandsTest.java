@@ -492,6 +492,10 @@ class CommandsTest {
         CliRun.of("evaluate", "--task", "flip", "--object", "can", "--task-set", "objects.can.armRest.phases=[\"SOON\"]")
                 .assertRefused(2, "objects.can.armRest.phases", "SOON");
         CliRun.of("evaluate", "--task", "height", "--task-set", "evaluationThrows").assertRefused(2, "--task-set takes KEY=VALUE", "evaluationThrows");
+        // the scene commands take it too, and refuse it as evaluate does before drawing anything
+        CliRun.of("export", "--task", "flip", "--object", "can", "--task-set", "objects.can.armRst=1", "--out", none.toString())
+                .assertRefused(2, "objects.can.armRst: unknown field");
+        CliRun.of("view", "--task", "flip", "--object", "can", "--task-set", "toleranceDeg=200").assertRefused(2, "toleranceDeg", "200");
         assertTrue(Files.notExists(none) && Files.notExists(dir.resolve("none.json.episodes.jsonl")), "nothing half-written");
     }
 
@@ -558,7 +562,7 @@ class CommandsTest {
 
     @Test
     void theViewersPlannedFlipSceneShowsThePlannersWorkAndOtherTasksAreNotPlannedWithANote() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true));
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true, java.util.Map.of()));
         SceneCatalog.Opened flip = catalog.open(new SceneSetup("flip", "can", "learned", 101));
         try (InteractiveScene scene = flip.scene()) {
             assertTrue(flip.notes().isEmpty(), String.join(" | ", flip.notes()));
