@@ -29,11 +29,15 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
         Map<String, Map<String, String>> copy = new LinkedHashMap<>();
         overrides.forEach((task, kv) -> {
             if (!NAMES.contains(task)) {
-                throw new IllegalArgumentException("unknown task \"" + task + "\"; tasks: " + String.join(", ", NAMES));
+                throw unknown(task);
             }
             copy.put(task, Collections.unmodifiableMap(new LinkedHashMap<>(kv)));
         });
         overrides = Collections.unmodifiableMap(copy);
+    }
+
+    private static IllegalArgumentException unknown(String name) {
+        return new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
     }
 
     /** The shipped tasks as their files say. */
@@ -59,7 +63,7 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
             case "height" -> height(null);
             case "box" -> new BoxTask(BoxTask.Config.parse(config("box")), nominal, neutralPalm);
             case "flip" -> new FlipTask(FlipTask.Config.parse(config("flip")), object, neutralPalm);
-            default -> throw new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
+            default -> throw unknown(name);
         };
     }
 
@@ -69,7 +73,7 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
             case "height" -> HeightTask.Config.parse(config(name));
             case "box" -> BoxTask.Config.parse(config(name));
             case "flip" -> FlipTask.Config.parse(config(name));
-            default -> throw new IllegalArgumentException("unknown task \"" + name + "\"; tasks: " + String.join(", ", NAMES));
+            default -> throw unknown(name);
         }
     }
 
