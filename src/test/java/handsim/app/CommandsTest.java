@@ -561,6 +561,25 @@ class CommandsTest {
     }
 
     @Test
+    void theScenesBuildTheirTasksWithTheFieldsTaskSetChanged() {
+        // configs/tasks/flip.json lists the can; with objects.can left out (--task-set objects.can=null) the flip
+        // task has no settings for it, and the scene falls back to the height task with the note it gives for a cuboid
+        var taskSet = java.util.Map.of("flip", java.util.Map.of("objects.can", "null"));
+        ShippedScenes varied = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7),
+                new ControllerOptions.Choice(null, null, null, false, taskSet));
+        SceneCatalog.Opened opened = varied.open(new SceneSetup("flip", "can", "nominal", 1));
+        try (InteractiveScene scene = opened.scene()) {
+            assertEquals(new SceneSetup("height", "can", "nominal", 1), opened.setup());
+            assertTrue(String.join(" | ", opened.notes()).contains("flip task has no settings for a can"), opened.notes().toString());
+        }
+        SceneCatalog.Opened shipped = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7),
+                ControllerOptions.Choice.SHIPPED).open(new SceneSetup("flip", "can", "nominal", 1));
+        try (InteractiveScene scene = shipped.scene()) {
+            assertEquals(new SceneSetup("flip", "can", "nominal", 1), shipped.setup(), "the shipped file flips the can");
+        }
+    }
+
+    @Test
     void theViewersPlannedFlipSceneShowsThePlannersWorkAndOtherTasksAreNotPlannedWithANote() {
         ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true, java.util.Map.of()));
         SceneCatalog.Opened flip = catalog.open(new SceneSetup("flip", "can", "learned", 101));
