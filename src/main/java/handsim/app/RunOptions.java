@@ -46,7 +46,7 @@ final class RunOptions {
 
     /** {@code config} with {@code overrides} ({@code --set} options) applied. */
     static Json configFile(Path config, List<String> overrides) {
-        return Json.of(config.toString(), Json.withOverrides(config.toString(), Json.load(config).node(), keyValues(overrides)));
+        return Json.load(config, keyValues(overrides));
     }
 
     /** {@code --set} options as dotted keys to JSON values, in order; a malformed one is named. */

@@ -61,6 +61,12 @@ public final class Json {
         return parse(file.toString(), text);
     }
 
+    /** Parses a file with {@code overrides} applied ({@link #withOverrides}): a run's variant of a config file. */
+    public static Json load(Path file, Map<String, String> overrides) {
+        Json j = load(file);
+        return of(j.source(), withOverrides(j.source(), j.node(), overrides));
+    }
+
     /** Parses JSON text; {@code source} names it in error messages, with the line and column of a syntax error. */
     public static Json parse(String source, String text) {
         try {

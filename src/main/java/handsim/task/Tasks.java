@@ -86,9 +86,7 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
 
     /** {@code configs/tasks/NAME.json} as these tasks read it: with their overrides of it applied. */
     public Json config(String name) {
-        Json shipped = Json.load(shippedFile(name));
-        Map<String, String> fields = overrides.getOrDefault(name, Map.of());
-        return fields.isEmpty() ? shipped : Json.of(shipped.source(), Json.withOverrides(shipped.source(), shipped.node(), fields));
+        return Json.load(shippedFile(name), overrides.getOrDefault(name, Map.of()));
     }
 
     private static Path shippedFile(String name) {

@@ -65,9 +65,9 @@ public final class SnapTrial {
             }
             target.put(key.substring(dot + 1), value);
         });
-        Json snap = loadWith(dir.resolve("snap.json"), byFile.get("snap"));
-        Json materialsFile = loadWith(dir.resolve("materials.json"), byFile.get("materials"));
-        Json solverFile = loadWith(dir.resolve("solver.json"), byFile.get("solver"));
+        Json snap = Json.load(dir.resolve("snap.json"), byFile.get("snap"));
+        Json materialsFile = Json.load(dir.resolve("materials.json"), byFile.get("materials"));
+        Json solverFile = Json.load(dir.resolve("solver.json"), byFile.get("solver"));
         SnapConfig config = SnapConfig.parse(snap, mesh);
         Materials materials = CardsConfig.materials(materialsFile, cardPreset);
         ObjectNode inputs = Json.mapper().createObjectNode();
@@ -78,11 +78,6 @@ public final class SnapTrial {
         inputs.set("materials", materialsFile.node().deepCopy());
         inputs.set("solver", solverFile.node().deepCopy());
         return new SnapTrial(config, materials, CardsConfig.solver(solverFile), inputs);
-    }
-
-    private static Json loadWith(Path file, Map<String, String> overrides) {
-        Json j = Json.load(file);
-        return Json.of(j.source(), Json.withOverrides(j.source(), j.node(), overrides));
     }
 
     /**
