@@ -3,6 +3,7 @@ package handsim.app;
 import handsim.train.ThrowPolicyFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import handsim.config.Json;
 import handsim.task.Tasks;
 import java.util.List;
 import java.util.Map;
@@ -107,8 +108,13 @@ final class ControllerOptions {
         refuseMisplaced("--opening-policy", openingPolicy);
         refuseMisplaced("--rest-policy", restPolicy);
         if (!taskSet.isEmpty()) {
-            tasks().check(task());
+            Tasks.check(task(), taskSetFields());
         }
+    }
+
+    /** {@code configs/tasks/NAME.json} as this run reads it: with --task-set applied when NAME is --task. */
+    Json taskFile(String name) {
+        return Tasks.config(name, name.equals(task()) ? taskSetFields() : Map.of());
     }
 
     /** The --task-set fields, in order (empty when none). */

@@ -132,11 +132,11 @@ final class EvaluateCommand implements Callable<Integer> {
         controller = who.controller();
         object = episodeOptions.object;
         config = EvaluationConfig.load(Home.resolve("configs/evaluation.json"));
-        tasks = who.tasks();
-        tasks.create(task, object); // a bad --task-set, or an object the task cannot take, fails here
-        height = HeightTask.Config.parse(tasks.config("height"));
+        height = HeightTask.Config.parse(who.taskFile("height"));
         loops = loopsOption != null ? loopsOption : copies != null ? config.sensitivityThrows()
-                : task.equals("flip") ? FlipTask.Config.parse(tasks.config("flip")).evaluationLoops() : height.evaluationThrows();
+                : task.equals("flip") ? FlipTask.Config.parse(who.taskFile("flip")).evaluationLoops() : height.evaluationThrows();
+        tasks = who.tasks();
+        tasks.create(task, object); // a bad --task-set, or an object the task cannot take, fails here, before any file is written
         validate();
         EpisodeJournal journal = null;
         if (json != null) {

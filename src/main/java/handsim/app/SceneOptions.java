@@ -46,7 +46,7 @@ final class SceneOptions {
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
         }
-        HeightTask.Config height = HeightTask.Config.parse(who.tasks().config("height"));
+        HeightTask.Config height = HeightTask.Config.parse(who.taskFile("height"));
         if (!height.allowsGoal(throwHeight)) {
             throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }

@@ -4,7 +4,6 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.NominalThrows;
 import handsim.math.Vec3;
-import java.nio.file.Path;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -67,12 +66,12 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
         };
     }
 
-    /** Reads task {@code name}'s file as these tasks do: a bad override fails here, naming its field and value. */
-    public void check(String name) {
+    /** Reads task {@code name}'s file with {@code fields} changed, as tasks do: a bad field fails here, naming it and its value. */
+    public static void check(String name, Map<String, String> fields) {
         switch (name) {
-            case "height" -> HeightTask.Config.parse(config(name));
-            case "box" -> BoxTask.Config.parse(config(name));
-            case "flip" -> FlipTask.Config.parse(config(name));
+            case "height" -> HeightTask.Config.parse(config(name, fields));
+            case "box" -> BoxTask.Config.parse(config(name, fields));
+            case "flip" -> FlipTask.Config.parse(config(name, fields));
             default -> throw unknown(name);
         }
     }
@@ -86,15 +85,16 @@ public record Tasks(NominalThrows nominal, Vec3 neutralPalm, double groundHeight
 
     /** {@code configs/tasks/NAME.json} as these tasks read it: with their overrides of it applied. */
     public Json config(String name) {
-        return Json.load(shippedFile(name), overrides.getOrDefault(name, Map.of()));
+        return config(name, overrides.getOrDefault(name, Map.of()));
     }
 
-    private static Path shippedFile(String name) {
-        return Home.resolve("configs/tasks/" + name + ".json");
+    /** {@code configs/tasks/NAME.json} with {@code fields} changed ({@link Json#withOverrides}). */
+    public static Json config(String name, Map<String, String> fields) {
+        return Json.load(Home.resolve("configs/tasks/" + name + ".json"), fields);
     }
 
     /** {@code configs/tasks/height.json}. */
     public static HeightTask.Config heightConfig() {
-        return HeightTask.Config.parse(Json.load(shippedFile("height")));
+        return HeightTask.Config.parse(config("height", Map.of()));
     }
 }
