@@ -1,0 +1,368 @@
+package handsim.app;
+
+import handsim.report.Outputs;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.kin.Frame;
+import handsim.model.HandModel;
+import handsim.model.Site;
+import handsim.rollout.Rollouts;
+import handsim.sim.ObjectSpec;
+import handsim.sim.SimConfig;
+import handsim.sim.Simulator;
+import handsim.sim.StepAccounting;
+import handsim.evaluation.CatchEvaluation;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.HeightGoals;
+import handsim.task.HeightTask;
+import handsim.task.Tasks;
+import handsim.task.HeldBallScenario;
+import handsim.task.ServoLoop;
+import java.lang.management.ManagementFactory;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BrokenBarrierException;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CyclicBarrier;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code handsim bench}: headless throughput of the real workload, catch-and-throw loops of the
+ * nominal controller (contacts, IK, PD, FSM), or of the arm holding a ball ({@link
+ * HeldBallScenario}). Every worker runs its own world for the same simulated time after a
+ * warm-up; with {@code --workers N > 1} a one-worker pass runs first and the speed-up is the
+ * ratio of the two totals.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Measure physics steps per second, real-time factor, where the time goes (collision, solver, "
+                + "controller, IK) and bytes allocated per step, on full catch-throw loops of the nominal controller "
+                + "(default) or on the arm holding a ball; --workers N runs N loops in parallel and reports the speed-up.")
+final class BenchCommand implements Callable<Integer> {
+
+    @Mixin
+    EpisodeOptions episodeOptions;
+
+    @Option(names = "--scenario", defaultValue = "loop",
+            description = "loop (catch-throw loops of the nominal controller) or held-ball (default: ${DEFAULT-VALUE})")
+    String scenario;
+
+    @Option(names = "--seconds", paramLabel = "S", defaultValue = "10",
+            description = "simulated seconds measured per worker, after the warm-up (default: ${DEFAULT-VALUE})")
+    double seconds;
+
+    @Option(names = "--warmup", paramLabel = "S", defaultValue = "3",
+            description = "simulated seconds of warm-up per worker, not measured (default: ${DEFAULT-VALUE})")
+    double warmup;
+
+    @Option(names = "--workers", paramLabel = "N", defaultValue = "1",
+            description = "independent loops run in parallel (default: ${DEFAULT-VALUE})")
+    int workers;
+
+    @Option(names = "--iterations", paramLabel = "N",
+            description = "quickStep iterations (default: configs/sim.json)")
+    Integer iterations;
+
+    @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
+            description = "desired apex height of every throw of the loop scenario (m, world; default: ${DEFAULT-VALUE})")
+    double throwHeight;
+
+    @Option(names = "--json", paramLabel = "FILE", description = "write the figures as JSON")
+    Path json;
+
+    /** Period of the execution samples for the time shares, ms. */
+    private static final long SAMPLE_PERIOD_MS = 10;
+    /** Seeds of worker w start at seed + w * WORKER_SEED_STRIDE. */
+    private static final long WORKER_SEED_STRIDE = 100_000;
+
+    /** What one worker measured. */
+    private record Run(long steps, double wallS, double cpuS, long bytes, StepAccounting engine, int episodes, int loopsCaught,
+            int firstCatches, boolean held, double ballToPalm) {
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (!scenario.equals("loop") && !scenario.equals("held-ball")) {
+            throw new IllegalArgumentException("--scenario must be loop or held-ball, got " + scenario);
+        }
+        if (!(seconds > 0 && seconds <= 3600)) {
+            throw new IllegalArgumentException("--seconds must be in (0, 3600], got " + seconds);
+        }
+        if (!(warmup >= 0 && warmup <= 600)) {
+            throw new IllegalArgumentException("--warmup must be in [0, 600], got " + warmup);
+        }
+        if (workers < 1 || workers > 256) {
+            throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
+        }
+        HeightTask.Config height = Tasks.heightConfig();
+        if (!height.allowsGoal(throwHeight)) {
+            throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
+        }
+        if (iterations != null && (iterations < 1 || iterations > 1000)) {
+            throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
+        }
+        new OutputPaths().file("--json", json).check();
+        HandModel model = Wiring.model(null);
+        SimConfig base = Wiring.simConfig();
+        SimConfig config = iterations != null ? base.withSolverIterations(iterations) : base;
+        ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
+
+        System.out.printf("bench %s: %d worker%s, %.0f s warm-up + %.0f s measured per worker, h = %.1f ms, "
+                + "quickStep iterations %d%n", scenario, workers, workers > 1 ? "s" : "", warmup, seconds,
+                config.timeStep() * 1e3, config.solverIterations());
+        ObjectNode out = JsonNodeFactory.instance.objectNode();
+        out.put("scenario", scenario);
+        out.put("object", thrown.name());
+        out.put("time_step_s", config.timeStep());
+        out.put("solver_iterations", config.solverIterations());
+        out.put("seconds_per_worker", seconds);
+        out.put("workers", workers);
+
+        ObjectNode single;
+        ObjectNode total;
+        Map<String, Double> shares;
+        int samples;
+        // the sampler runs through both passes, so that its small cost is the same in each; it
+        // counts the one-worker pass only
+        try (StackSampler sampler = new StackSampler(SAMPLE_PERIOD_MS)) {
+            single = summarize(pass(model, config, thrown, 1, sampler), config);
+            sampler.closeWindow();
+            print("1 worker", single);
+            total = single;
+            if (workers > 1) {
+                total = summarize(pass(model, config, thrown, workers, null), config);
+            }
+            sampler.stop();
+            shares = sampler.shares();
+            samples = sampler.samples();
+        }
+        System.out.printf("  time shares (timed in step()): %s%n", formatShares(single.get("time_shares")));
+        // JFR's execution samples skip threads in native code (StrictMath), so only the IK's
+        // share, pure Java inside the controller, is read from them
+        System.out.printf("  of which DLS IK: %.1f %% (%d JFR execution samples)%n", 100 * shares.get("ik"), samples);
+        if (workers > 1) {
+            print(workers + " workers", total);
+        }
+        double speedup = total.get("steps_per_s").asDouble() / single.get("steps_per_s").asDouble();
+        if (workers > 1) {
+            System.out.printf("  speed-up over 1 worker: %.2fx%n", speedup);
+        }
+        out.put("steps_per_s", total.get("steps_per_s").asDouble());
+        out.put("realtime_factor", total.get("realtime_factor").asDouble());
+        out.put("bytes_per_step", total.get("bytes_per_step").asDouble());
+        out.put("speedup", speedup);
+        out.set("single_worker", single);
+        ObjectNode shareNode = single.putObject("sampled_shares");
+        shares.forEach(shareNode::put);
+        single.put("sampled_share_samples", samples);
+        if (workers > 1) {
+            out.set("parallel", total);
+        }
+        if (json != null) {
+            Outputs.writeJson(json, out);
+            System.out.println("wrote " + json);
+        }
+        boolean ok = scenario.equals("held-ball") ? single.get("ball_held").asBoolean() : single.get("loops_caught").asInt() > 0;
+        return ok ? 0 : 1;
+    }
+
+    /** Runs {@code n} workers at once, each on its own engine, measuring after a common start. */
+    private List<Run> pass(HandModel model, SimConfig config, ObjectSpec thrown, int n, StackSampler sampler) {
+        CyclicBarrier measuredStart = new CyclicBarrier(n, () -> {
+            if (sampler != null) {
+                sampler.start();
+            }
+        });
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, config, n)) {
+            return rollouts.run(n, sim -> worker -> {
+                if (sampler != null) {
+                    sampler.register();
+                }
+                return scenario.equals("held-ball") ? heldBall(sim, model, thrown, measuredStart)
+                        : loops(sim, thrown, episodeOptions.seed + worker * WORKER_SEED_STRIDE, measuredStart);
+            });
+        }
+    }
+
+    /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
+    private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
+        CatchEvaluation evaluation = Wiring.nominalEvaluation(episodeOptions.object, Wiring.heightTask(HeightGoals.fixed(throwHeight)));
+        long warmSteps = Math.round(warmup / sim.config().timeStep());
+        long measuredSteps = Math.round(seconds / sim.config().timeStep());
+        long s = firstSeed;
+        CatchThrowEpisode episode = evaluation.start(sim, s);
+        long done = 0;
+        Meter meter = null;
+        int episodes = 1, caught = 0, firstCatches = 0;
+        while (true) {
+            if (meter == null && done >= warmSteps) {
+                await(start);
+                meter = new Meter(sim, done);
+                episodes = 1;
+                caught = 0;
+                firstCatches = 0;
+            }
+            if (meter != null && done - meter.steps0 >= measuredSteps) {
+                return meter.finish(done, episodes, caught, firstCatches, false, Double.NaN);
+            }
+            long before = sim.stepCount();
+            var loop = evaluation.tick(episode, s);
+            done += sim.stepCount() - before;
+            if (loop != null && loop.caught()) {
+                caught++;
+                firstCatches += loop.index() == 0 ? 1 : 0;
+            }
+            if (episode.status() != CatchThrowEpisode.Status.RUNNING) {
+                episode = evaluation.start(sim, ++s);
+                episodes++;
+            }
+        }
+    }
+
+    /** The arm holds the ball thrown into its palm: the foundation's benchmark. */
+    private Run heldBall(Simulator sim, HandModel model, ObjectSpec ball, CyclicBarrier start) {
+        HeldBallScenario scenario = new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), ball, 0.2, 1);
+        long warmSteps = Math.max(Math.round(warmup / sim.config().timeStep()), Math.round(1.0 / sim.config().timeStep()));
+        long measuredSteps = Math.round(seconds / sim.config().timeStep());
+        for (long i = 0; i < warmSteps; i++) {
+            scenario.step();
+        }
+        await(start);
+        Meter meter = new Meter(sim, 0);
+        for (long i = 0; i < measuredSteps; i++) {
+            scenario.step();
+        }
+        Site palm = model.site("palm_center");
+        Frame palmFrame = sim.bodyFrame(palm.body()).compose(new Frame(palm.position(), palm.orientation()));
+        double ballToPalm = palmFrame.origin().distance(sim.objectState().position());
+        boolean held = sim.handContacts().any() && ballToPalm < 0.06;
+        return meter.finish(measuredSteps, 1, held ? 1 : 0, held ? 1 : 0, held, ballToPalm);
+    }
+
+    /** Wall time, this thread's CPU time and allocation from a start. */
+    private static final class Meter {
+        private static final com.sun.management.ThreadMXBean THREADS =
+                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        final Simulator sim;
+        final long steps0;
+        final StepAccounting engine0;
+        final long t0;
+        final long cpu0;
+        final long bytes0;
+
+        /** Starts measuring, and counting the engine's own allocation apart. */
+        Meter(Simulator sim, long steps0) {
+            this.sim = sim;
+            this.steps0 = steps0;
+            sim.setAccounting(true);
+            engine0 = sim.accounting().copy();
+            t0 = System.nanoTime();
+            cpu0 = THREADS.getCurrentThreadCpuTime();
+            bytes0 = THREADS.getCurrentThreadAllocatedBytes();
+        }
+
+        Run finish(long steps, int episodes, int caught, int firstCatches, boolean held, double ballToPalm) {
+            Run r = new Run(steps - steps0, (System.nanoTime() - t0) / 1e9, (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9,
+                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, minus(sim.accounting(), engine0),
+                    episodes, caught, firstCatches, held, ballToPalm);
+            sim.setAccounting(false);
+            return r;
+        }
+    }
+
+    private static void await(CyclicBarrier barrier) {
+        try {
+            barrier.await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted", e);
+        } catch (BrokenBarrierException e) {
+            throw new IllegalStateException("another worker failed", e);
+        }
+    }
+
+    /**
+     * Totals of one pass: steps/s is the sum of the workers' steps over the longest worker's
+     * wall time (all start together), steps per CPU second is less sensitive to other load.
+     */
+    private static ObjectNode summarize(List<Run> runs, SimConfig config) {
+        long steps = 0, bytes = 0, engineBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
+        double wallSum = 0;
+        double wall = 0, cpu = 0;
+        int episodes = 0, caught = 0, firstCatches = 0;
+        boolean held = true;
+        double ballToPalm = 0;
+        for (Run r : runs) {
+            steps += r.steps();
+            bytes += r.bytes();
+            engineBytes += r.engine().engineBytes();
+            stepNs += r.engine().stepNanos();
+            collisionNs += r.engine().collisionNanos();
+            solverNs += r.engine().solverNanos();
+            wallSum += r.wallS();
+            wall = Math.max(wall, r.wallS());
+            cpu += r.cpuS();
+            episodes += r.episodes();
+            caught += r.loopsCaught();
+            firstCatches += r.firstCatches();
+            held &= r.held();
+            ballToPalm = Math.max(ballToPalm, r.ballToPalm());
+        }
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
+        o.put("workers", runs.size());
+        o.put("steps", steps);
+        o.put("wall_s", wall);
+        o.put("steps_per_s", steps / wall);
+        o.put("realtime_factor", steps / wall * config.timeStep());
+        o.put("steps_per_cpu_s", steps / cpu);
+        o.put("bytes_per_step", (double) bytes / steps);
+        o.put("engine_bytes_per_step", (double) engineBytes / steps);
+        // where the wall time of the loop goes, timed inside the simulator's step()
+        ObjectNode shares = o.putObject("time_shares");
+        double wallNs = wallSum * 1e9;
+        shares.put("solver", solverNs / wallNs);
+        shares.put("collision", collisionNs / wallNs);
+        shares.put("engine_glue", (stepNs - solverNs - collisionNs) / wallNs);
+        shares.put("controller_pd_episode", Math.max(0, 1 - stepNs / wallNs));
+        o.put("handsim_bytes_per_step", (double) (bytes - engineBytes) / steps);
+        o.put("allocation_mb_per_s", bytes / wall / 1e6);
+        o.put("episodes", episodes);
+        o.put("loops_caught", caught);
+        o.put("first_catches", firstCatches);
+        o.put("ball_held", held);
+        if (Double.isFinite(ballToPalm)) {
+            o.put("ball_to_palm_m", ballToPalm);
+        }
+        return o;
+    }
+
+    private static void print(String label, ObjectNode o) {
+        System.out.printf("  %s: %d steps in %.2f s: %.0f steps/s, %.2fx real time (%.0f steps per CPU second), "
+                + "%.0f bytes/step (ode4j %.0f, handsim %.0f); %d episodes, %d catches%n", label, o.get("steps").asLong(),
+                o.get("wall_s").asDouble(), o.get("steps_per_s").asDouble(), o.get("realtime_factor").asDouble(),
+                o.get("steps_per_cpu_s").asDouble(), o.get("bytes_per_step").asDouble(), o.get("engine_bytes_per_step").asDouble(),
+                o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(), o.get("loops_caught").asInt());
+    }
+
+    private static String formatShares(Map<String, Double> shares) {
+        StringBuilder b = new StringBuilder();
+        shares.forEach((k, v) -> b.append(b.length() > 0 ? ", " : "").append(String.format("%s %.1f %%", k, 100 * v)));
+        return b.toString();
+    }
+
+    private static String formatShares(com.fasterxml.jackson.databind.JsonNode shares) {
+        Map<String, Double> m = new java.util.LinkedHashMap<>();
+        shares.fields().forEachRemaining(e -> m.put(e.getKey(), e.getValue().asDouble()));
+        return formatShares(m);
+    }
+
+    /** The accounting accumulated since {@code from}. */
+    private static StepAccounting minus(StepAccounting now, StepAccounting from) {
+        StepAccounting d = new StepAccounting();
+        d.add(now.stepNanos() - from.stepNanos(), now.collisionNanos() - from.collisionNanos(),
+                now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes());
+        return d;
+    }
+}

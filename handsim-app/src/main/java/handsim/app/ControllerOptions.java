@@ -1,0 +1,172 @@
+package handsim.app;
+
+import handsim.train.ThrowPolicyFile;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import handsim.config.Json;
+import handsim.task.Tasks;
+import java.util.List;
+import java.util.Map;
+import picocli.CommandLine.Option;
+
+/**
+ * Who throws, declared once for every command that runs a catch-and-throw loop ({@code
+ * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at (and fields
+ * of its file changed), the nominal or a learned controller, the learned controller's policy (and
+ * the flip's opening and rest policies) and the throw planner. Left out, an option is null (false
+ * for {@code --plan}, empty for {@code --task-set}); {@link #task()} and {@link #controller()}
+ * give the defaults.
+ */
+final class ControllerOptions {
+
+    /**
+     * The policy files given for a learned controller (null: not given), whether the planner
+     * chooses the flip's throws and, per task name, the fields of its file changed: what the
+     * viewer's scenes are opened with.
+     */
+    record Choice(Path policy, Path opening, Path rest, boolean plan, Map<String, Map<String, String>> taskSet) {
+
+        /** Nothing given: the shipped policies and tasks, no planner. */
+        static final Choice SHIPPED = new Choice(null, null, null, false, Map.of());
+
+        /** The shipped tasks with {@link #taskSet} applied. */
+        Tasks tasks() {
+            Tasks tasks = Wiring.tasks();
+            for (Map.Entry<String, Map<String, String>> e : taskSet.entrySet()) {
+                tasks = tasks.withOverrides(e.getKey(), e.getValue());
+            }
+            return tasks;
+        }
+    }
+
+    @Option(names = "--task", description = "height, box or flip (default: height)")
+    String task;
+
+    @Option(names = "--controller", description = "nominal or learned (default: nominal)")
+    String controller;
+
+    @Option(names = "--policy", paramLabel = "FILE",
+            description = "the learned controller's policy (default: the shipped models/policies/<task>-<object>.json)")
+    Path policy;
+
+    @Option(names = "--opening-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for each episode's first throw, made from the object caught out "
+                    + "of the launch (default: with the shipped policy, models/policies/flip-<object>-opening.json when it "
+                    + "exists; with --policy, that policy makes every throw)")
+    Path openingPolicy;
+
+    @Option(names = "--rest-policy", paramLabel = "FILE",
+            description = "flip, learned controller: the policy for the throws after the first made from the rest of the object in "
+                    + "the hand it was trained for (its provenance's config.learnerThrows.rest) (default: with the shipped policy, "
+                    + "models/policies/flip-<object>-rest.json when it exists; with --policy, none); with --plan, the planner's "
+                    + "tries go on with it too")
+    Path restPolicy;
+
+    @Option(names = "--task-set", paramLabel = "KEY=VALUE", description = "change a field of the task's configs/tasks/TASK.json "
+            + "for this run, e.g. --task-set 'objects.can.armRest.phases=[\"GOBACK\"]', or leave an optional one out with "
+            + "--task-set objects.can.armRest=null (repeatable; dotted paths)")
+    List<String> taskSet = List.of();
+
+    @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
+            + "world first (handsim.planning.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
+    boolean plan;
+
+    /** --task, or height. */
+    String task() {
+        return task != null ? task : "height";
+    }
+
+    /** --controller, or nominal. */
+    String controller() {
+        return controller != null ? controller : "nominal";
+    }
+
+    /** Whether any of --task, --controller and --plan was given. */
+    boolean given() {
+        return task != null || controller != null || plan;
+    }
+
+    /** Refuses an unknown task or controller and a policy for the nominal controller. */
+    void validate() {
+        if (!List.of("height", "box", "flip").contains(task())) {
+            throw new IllegalArgumentException("--task must be height, box or flip, got " + task);
+        }
+        if (!List.of("nominal", "learned").contains(controller())) {
+            throw new IllegalArgumentException("--controller must be nominal or learned, got " + controller);
+        }
+        if (policy != null && !controller().equals("learned")) {
+            throw new IllegalArgumentException("--policy goes with --controller learned");
+        }
+        validateFlipPolicies();
+    }
+
+    /**
+     * Refuses an opening or rest policy where no learned flip is thrown, one whose file does not
+     * exist (a typo), and a --task-set the task's file does not take.
+     */
+    void validateFlipPolicies() {
+        refuseMisplaced("--opening-policy", openingPolicy);
+        refuseMisplaced("--rest-policy", restPolicy);
+        if (!taskSet.isEmpty()) {
+            Tasks.check(task(), taskSetFields());
+        }
+    }
+
+    /** {@code configs/tasks/NAME.json} as this run reads it: with --task-set applied when NAME is --task. */
+    Json taskFile(String name) {
+        return Tasks.config(name, name.equals(task()) ? taskSetFields() : Map.of());
+    }
+
+    /** The --task-set fields, in order (empty when none). */
+    Map<String, String> taskSetFields() {
+        return RunOptions.keyValues("--task-set", taskSet);
+    }
+
+    /** The shipped tasks with --task-set applied to --task's file. */
+    Tasks tasks() {
+        return choice().tasks();
+    }
+
+    private void refuseMisplaced(String option, Path file) {
+        if (file != null && (!task().equals("flip") || !controller().equals("learned"))) {
+            throw new IllegalArgumentException(option + " goes with the flip task and --controller learned, got --task " + task()
+                    + " --controller " + controller());
+        }
+        if (file != null && !Files.isRegularFile(file)) {
+            throw new IllegalArgumentException(option + ": no file " + file);
+        }
+    }
+
+    /** The options as the viewer's scenes take them. */
+    Choice choice() {
+        Map<String, String> fields = taskSetFields();
+        return new Choice(policy, openingPolicy, restPolicy, plan, fields.isEmpty() ? Map.of() : Map.of(task(), fields));
+    }
+
+    /** The learned controller's policy file: --policy, or the one shipped for the task and {@code object}. */
+    Path policyFile(String object) {
+        return policy != null ? policy : ThrowPolicyFile.shipped(task(), object);
+    }
+
+    /**
+     * The learned controller's policy for each episode's first throw: --opening-policy; else, with
+     * the shipped policy, the opening one shipped beside it if there is one; else null (one policy
+     * makes every throw).
+     */
+    Path openingFile(String object) {
+        return givenOrBesideShipped(openingPolicy, ThrowPolicyFile.shippedOpening(task(), object));
+    }
+
+    /**
+     * The learned controller's policy for the throws from one rest of the object: --rest-policy;
+     * else, with the shipped policy, the rest policy shipped beside it if there is one; else null.
+     */
+    Path restFile(String object) {
+        return givenOrBesideShipped(restPolicy, ThrowPolicyFile.shippedRest(task(), object));
+    }
+
+    /** {@code given} when given, with --policy or for the nominal controller; else {@code shipped} (null when none ships). */
+    private Path givenOrBesideShipped(Path given, Path shipped) {
+        return given != null || policy != null || !controller().equals("learned") ? given : shipped;
+    }
+}

@@ -1,0 +1,30 @@
+package handsim;
+
+import handsim.config.Home;
+import handsim.config.Json;
+import handsim.viewer.ViewerConfig;
+
+/** Shared loading of the application's configs and scenes for tests (the hand's: {@link TestSupport}). */
+public final class AppTestSupport {
+
+    private AppTestSupport() {
+    }
+
+    /** The shipped drawing and viewer settings ({@code configs/viewer.json}). */
+    public static ViewerConfig viewerConfig() {
+        return ViewerConfig.load(Home.resolve("configs/viewer.json"));
+    }
+
+    /**
+     * The viewer's catch-and-throw loop of the height task (goal 1.2 m) with the nominal
+     * controller and {@code object}, from the episode of {@code seed}, on {@code sim} (the scene owns it).
+     */
+    public static handsim.scene.CatchLoopScene heightLoopScene(handsim.sim.Simulator sim, String object, long seed) {
+        handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
+        handsim.evaluation.CatchEvaluation evaluation = handsim.evaluation.CatchEvaluation.nominal(cc,
+                handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
+                TestSupport.heightTask(handsim.task.HeightGoals.fixed(1.2)));
+        return new handsim.scene.CatchLoopScene(sim, evaluation, seed, new handsim.scene.HeightControl(0.05, 0.8, 1.7));
+    }
+}
