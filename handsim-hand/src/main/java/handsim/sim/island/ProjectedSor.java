@@ -1,0 +1,207 @@
+package handsim.sim.island;
+
+import static handsim.sim.island.ConstraintRows.CFM;
+import static handsim.sim.island.ConstraintRows.HI;
+import static handsim.sim.island.ConstraintRows.IMJ1;
+import static handsim.sim.island.ConstraintRows.IMJ2;
+import static handsim.sim.island.ConstraintRows.J1;
+import static handsim.sim.island.ConstraintRows.J2;
+import static handsim.sim.island.ConstraintRows.LO;
+import static handsim.sim.island.ConstraintRows.RHS;
+import static handsim.sim.island.ConstraintRows.STRIDE;
+
+import java.util.Arrays;
+
+/**
+ * Projected Gauss-Seidel with successive over-relaxation over one island's rows, ODE's SOR-LCP:
+ * every row's rhs becomes the velocity error it must remove, rhs/h - J (v/h + M^-1 f); each row is
+ * scaled by w / (J M^-1 J^T + cfm) (w the over-relaxation); then every iteration sweeps the rows,
+ * each taking the impulse change that zeroes its residual, clamped to its bounds (a friction
+ * row's to mu times its normal row's current impulse), and carrying it to the bodies through
+ * fc = M^-1 J^T lambda at once. Rows without friction bounds go first; every 8th iteration from
+ * the 8th the order is shuffled with the world's generator.
+ */
+final class ProjectedSor {
+
+    /** The shuffle period in iterations, ODE's. */
+    private static final int SHUFFLE_PERIOD = 8;
+
+    /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
+    final double[] fc;
+    /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
+    private final double[] free;
+    private int[] order = new int[64];
+
+    ProjectedSor(int bodyCount) {
+        fc = new double[6 * bodyCount];
+        free = new double[6 * bodyCount];
+    }
+
+    /** The free motion of every body the rows may touch, once per step. */
+    void prepare(RigidBodies bodies, double h) {
+        Arrays.fill(fc, 0);
+        for (int i = 0; i < bodies.count; i++) {
+            if (bodies.active[i]) {
+                bodies.freeMotion(i, h, free, 6 * i);
+            }
+        }
+    }
+
+    /** Solves rows [start, end) (one island) in {@code iterations} sweeps; adds their effect to {@link #fc}. */
+    void solve(ConstraintRows rows, int start, int end, RigidBodies bodies, double h, int iterations, double sor,
+            ShuffleRandom random) {
+        int m = end - start;
+        if (m == 0) {
+            return;
+        }
+        double rh = 1 / h;
+        double[] d = rows.data;
+        int frictionRows = 0;
+        for (int i = start; i < end; i++) {
+            int o = STRIDE * i;
+            d[o + RHS] *= rh;
+            d[o + CFM] *= rh;
+            frictionRows += rows.findex[i] >= 0 ? 1 : 0;
+            rows.lambda[i] = 0;
+        }
+        for (int i = start; i < end; i++) {
+            addFreeMotion(d, STRIDE * i, rows.body1[i], rows.body2[i]);
+        }
+        for (int i = start; i < end; i++) {
+            scale(d, STRIDE * i, rows.body1[i], rows.body2[i], bodies, sor);
+        }
+        if (order.length < m) {
+            order = new int[Math.max(m, 2 * order.length)];
+        }
+        int head = 0, tail = m - frictionRows;
+        for (int i = start; i < end; i++) {
+            if (rows.findex[i] < 0) {
+                order[head++] = i;
+            } else {
+                order[tail++] = i;
+            }
+        }
+        for (int it = 0; it < iterations; it++) {
+            if (it >= SHUFFLE_PERIOD && it % SHUFFLE_PERIOD == 0) {
+                for (int k = 1; k < m; k++) {
+                    int swap = random.below(k + 1);
+                    int t = order[k];
+                    order[k] = order[swap];
+                    order[swap] = t;
+                }
+            }
+            sweep(rows, m);
+        }
+    }
+
+    /** rhs += J (-(v/h + M^-1 f)) of the row's bodies. */
+    private void addFreeMotion(double[] d, int o, int b1, int b2) {
+        double sum = 0;
+        int f = 6 * b1;
+        for (int k = 0; k < 6; k++) {
+            sum += d[o + J1 + k] * free[f + k];
+        }
+        if (b2 >= 0) {
+            f = 6 * b2;
+            for (int k = 0; k < 6; k++) {
+                sum += d[o + J2 + k] * free[f + k];
+            }
+        }
+        d[o + RHS] += sum;
+    }
+
+    /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
+    private static void scale(double[] d, int o, int b1, int b2, RigidBodies bodies, double sor) {
+        inverseMassTimes(d, o + J1, o + IMJ1, b1, bodies);
+        double sum = 0;
+        for (int k = 0; k < 6; k++) {
+            sum += d[o + IMJ1 + k] * d[o + J1 + k];
+        }
+        if (b2 >= 0) {
+            inverseMassTimes(d, o + J2, o + IMJ2, b2, bodies);
+            for (int k = 0; k < 6; k++) {
+                sum += d[o + IMJ2 + k] * d[o + J2 + k];
+            }
+        }
+        double cfm = d[o + CFM];
+        double ad = sor / (sum + cfm);
+        d[o + CFM] = cfm * ad;
+        d[o + RHS] *= ad;
+        for (int k = 0; k < 6; k++) {
+            d[o + J1 + k] *= ad;
+        }
+        if (b2 >= 0) {
+            for (int k = 0; k < 6; k++) {
+                d[o + J2 + k] *= ad;
+            }
+        }
+    }
+
+    private static void inverseMassTimes(double[] d, int j, int out, int b, RigidBodies bodies) {
+        double im = bodies.inverseMass[b];
+        for (int k = 0; k < 3; k++) {
+            d[out + k] = im * d[j + k];
+        }
+        Matrix3.multiply(bodies.inverseInertiaWorld, 9 * b, d, j + 3, d, out + 3);
+    }
+
+    /**
+     * One Gauss-Seidel sweep over the island's rows in {@link #order}. The two bodies' parts of
+     * J fc are summed pairwise rather than left to right: the sweep is bound by the latency of
+     * this sum, each row waiting for the fc its predecessor changed.
+     */
+    private void sweep(ConstraintRows rows, int m) {
+        double[] d = rows.data;
+        double[] lambda = rows.lambda;
+        int[] body1 = rows.body1, body2 = rows.body2, findex = rows.findex;
+        double[] f = fc;
+        for (int k = 0; k < m; k++) {
+            int i = order[k];
+            int o = STRIDE * i;
+            int f1 = 6 * body1[i];
+            int b2 = body2[i];
+            double old = lambda[i];
+            double s1 = (f[f1] * d[o] + f[f1 + 1] * d[o + 1]) + (f[f1 + 2] * d[o + 2] + f[f1 + 3] * d[o + 3])
+                    + (f[f1 + 4] * d[o + 4] + f[f1 + 5] * d[o + 5]);
+            double s2 = 0;
+            int f2 = 6 * b2;
+            if (b2 >= 0) {
+                s2 = (f[f2] * d[o + 6] + f[f2 + 1] * d[o + 7]) + (f[f2 + 2] * d[o + 8] + f[f2 + 3] * d[o + 9])
+                        + (f[f2 + 4] * d[o + 10] + f[f2 + 5] * d[o + 11]);
+            }
+            double delta = (d[o + RHS] - old * d[o + CFM]) - (s1 + s2);
+            double lo, hi;
+            int normal = findex[i];
+            if (normal >= 0) {
+                hi = Math.abs(d[o + HI] * lambda[normal]);
+                lo = -hi;
+            } else {
+                lo = d[o + LO];
+                hi = d[o + HI];
+            }
+            double next = old + delta;
+            if (next < lo) {
+                delta = lo - old;
+                next = lo;
+            } else if (next > hi) {
+                delta = hi - old;
+                next = hi;
+            }
+            lambda[i] = next;
+            f[f1] += delta * d[o + IMJ1];
+            f[f1 + 1] += delta * d[o + IMJ1 + 1];
+            f[f1 + 2] += delta * d[o + IMJ1 + 2];
+            f[f1 + 3] += delta * d[o + IMJ1 + 3];
+            f[f1 + 4] += delta * d[o + IMJ1 + 4];
+            f[f1 + 5] += delta * d[o + IMJ1 + 5];
+            if (b2 >= 0) {
+                f[f2] += delta * d[o + IMJ2];
+                f[f2 + 1] += delta * d[o + IMJ2 + 1];
+                f[f2 + 2] += delta * d[o + IMJ2 + 2];
+                f[f2 + 3] += delta * d[o + IMJ2 + 3];
+                f[f2 + 4] += delta * d[o + IMJ2 + 4];
+                f[f2 + 5] += delta * d[o + IMJ2 + 5];
+            }
+        }
+    }
+}
