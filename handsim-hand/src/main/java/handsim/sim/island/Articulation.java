@@ -29,6 +29,9 @@ public final class Articulation {
     /** Up to three stops per joint (rad): lower and upper per axis. */
     double[] lower = new double[24];
     double[] upper = new double[24];
+    /** tan(stop / 2) of each stop, to test a hinge's or universal joint's stops without the arc tangent. */
+    double[] lowerHalfTangent = new double[24];
+    double[] upperHalfTangent = new double[24];
     /** A universal joint's cross frames at rest (8 per joint, see JointAngles.universal). */
     double[] crossAtRest = new double[64];
 
@@ -48,9 +51,15 @@ public final class Articulation {
         System.arraycopy(anchorInChild, 0, anchor2, 3 * j, 3);
         System.arraycopy(axisInParent, 0, axis1, 3 * j, 3);
         System.arraycopy(axisInChild, 0, axis2, 3 * j, 3);
-        lower[3 * j] = lo;
-        upper[3 * j] = hi;
+        setStop(j, 0, lo, hi);
         return j;
+    }
+
+    private void setStop(int j, int axis, double lo, double hi) {
+        lower[3 * j + axis] = lo;
+        upper[3 * j + axis] = hi;
+        lowerHalfTangent[3 * j + axis] = Math.tan(lo / 2);
+        upperHalfTangent[3 * j + axis] = Math.tan(hi / 2);
     }
 
     /**
@@ -64,10 +73,8 @@ public final class Articulation {
         System.arraycopy(anchorInChild, 0, anchor2, 3 * j, 3);
         System.arraycopy(axis1InParent, 0, axis1, 3 * j, 3);
         System.arraycopy(axis2InChild, 0, axis2, 3 * j, 3);
-        lower[3 * j] = lo1;
-        upper[3 * j] = hi1;
-        lower[3 * j + 1] = lo2;
-        upper[3 * j + 1] = hi2;
+        setStop(j, 0, lo1, hi1);
+        setStop(j, 1, lo2, hi2);
         // at rest both bodies are unrotated: the body-frame axes are the world axes
         if (!JointAngles.crossFrame(axis1InParent[0], axis1InParent[1], axis1InParent[2], axis2InChild[0], axis2InChild[1],
                 axis2InChild[2], crossAtRest, 8 * j)
@@ -109,6 +116,8 @@ public final class Articulation {
             axis2 = Arrays.copyOf(axis2, 3 * n);
             lower = Arrays.copyOf(lower, 3 * n);
             upper = Arrays.copyOf(upper, 3 * n);
+            lowerHalfTangent = Arrays.copyOf(lowerHalfTangent, 3 * n);
+            upperHalfTangent = Arrays.copyOf(upperHalfTangent, 3 * n);
             crossAtRest = Arrays.copyOf(crossAtRest, 8 * n);
         }
         int j = count++;

@@ -52,7 +52,9 @@ final class ConstraintRows {
         }
         int i = count++;
         int o = STRIDE * i;
-        Arrays.fill(data, o, o + IMJ1, 0);
+        for (int k = o; k < o + IMJ1; k++) {
+            data[k] = 0;
+        }
         data[o + RHS] = 0;
         data[o + CFM] = cfm;
         data[o + LO] = Double.NEGATIVE_INFINITY;

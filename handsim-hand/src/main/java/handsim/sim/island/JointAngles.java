@@ -25,25 +25,40 @@ final class JointAngles {
     }
 
     /**
-     * The angle of the relative rotation q (at {@code qi}) about {@code axis} (at {@code ai}, in
-     * the frame q is expressed in), in (-pi, pi], with ODE's sign (the engine's axis turns the
-     * second body by minus the angle).
+     * The relative rotation q (at {@code qi}) seen about {@code axis} (at {@code ai}, in the frame
+     * q is expressed in): into {@code out} at {@code oi} the sine of the half angle |v| and the
+     * cosine w, negated when v points away from the axis (which keeps the angle's sign).
      */
-    static double aboutAxis(double[] q, int qi, double[] axis, int ai) {
+    static void aboutAxis(double[] q, int qi, double[] axis, int ai, double[] out, int oi) {
         double w = q[qi], x = q[qi + 1], y = q[qi + 2], z = q[qi + 3];
-        double sinHalf = Math.sqrt(x * x + y * y + z * z);
-        double theta = x * axis[ai] + y * axis[ai + 1] + z * axis[ai + 2] >= 0 ? 2 * Math.atan2(sinHalf, w)
-                : 2 * Math.atan2(sinHalf, -w);
+        out[oi] = Math.sqrt(x * x + y * y + z * z);
+        out[oi + 1] = x * axis[ai] + y * axis[ai + 1] + z * axis[ai + 2] >= 0 ? w : -w;
+    }
+
+    /**
+     * The angle of a rotation given by {@link #aboutAxis}, in [-pi, pi), with ODE's sign (the
+     * engine's axis turns the second body by minus the angle).
+     */
+    static double angle(double sinHalf, double cosHalf) {
+        double theta = 2 * Math.atan2(sinHalf, cosHalf);
         if (theta > Math.PI) {
             theta -= 2 * Math.PI;
         }
         return -theta;
     }
 
-    /** A hinge's angle: the child's rotation relative to the parent ({@code q1}, {@code q2} at their offsets) about the parent-frame axis. */
-    static double hinge(double[] q1, int i1, double[] q2, int i2, double[] axis, int ai, double[] s) {
+    /**
+     * tan(angle / 2) of a rotation given by {@link #aboutAxis}, which grows with the angle on
+     * (-pi, pi): stops are tested by it without the arc tangent.
+     */
+    static double halfTangent(double sinHalf, double cosHalf) {
+        return -sinHalf / cosHalf;
+    }
+
+    /** A hinge's rotation about its axis (see {@link #aboutAxis}): the child's relative to the parent about the parent-frame axis. */
+    static void hinge(double[] q1, int i1, double[] q2, int i2, double[] axis, int ai, double[] s, double[] out, int oi) {
         multiply(q1, i1, true, q2, i2, false, s, 0);
-        return aboutAxis(s, 0, axis, ai);
+        aboutAxis(s, 0, axis, ai, out, oi);
     }
 
     /**
@@ -115,23 +130,24 @@ final class JointAngles {
     }
 
     /**
-     * A universal joint's two angles into {@code out[0]}, {@code out[1]}: each body's rotation
-     * relative to the cross frame of the world axes {@code ax1}, {@code ax2} (at {@code wi} and
-     * {@code wi + 3}), referred to the cross frames at rest ({@code rest}: 8 numbers, the frame
-     * of (axis1, axis2) then of (axis2, axis1)), about each body's own axis ({@code axis1},
-     * {@code axis2} in the body frames); the second body's cross frame is the first turned half
-     * a turn about the bisector of the axes. {@code s} holds 16 numbers.
+     * A universal joint's two rotations (see {@link #aboutAxis}) into {@code out} (4 numbers; the
+     * second angle is minus that rotation's): each body's rotation relative to the cross frame
+     * of the world axes {@code ax1}, {@code ax2} (at {@code wi} and {@code wi + 3}), referred to
+     * the cross frames at rest ({@code rest}: 8 numbers, the frame of (axis1, axis2) then of
+     * (axis2, axis1)), about each body's own axis ({@code axis1}, {@code axis2} in the body
+     * frames); the second body's cross frame is the first turned half a turn about the bisector
+     * of the axes. Returns false (both rotations zero) for parallel axes. {@code s} holds 16.
      */
-    static void universal(double[] q1, int i1, double[] q2, int i2, double[] w, int wi, double[] rest, int ri,
+    static boolean universal(double[] q1, int i1, double[] q2, int i2, double[] w, int wi, double[] rest, int ri,
             double[] axis1, double[] axis2, int ai, double[] out, double[] s) {
         if (!crossFrame(w[wi], w[wi + 1], w[wi + 2], w[wi + 3], w[wi + 4], w[wi + 5], s, 0)) {
-            out[0] = 0;
-            out[1] = 0;
-            return;
+            out[0] = out[2] = 0;
+            out[1] = out[3] = 1;
+            return false;
         }
         multiply(q1, i1, true, s, 0, false, s, 4);
         multiply(s, 4, false, rest, ri, true, s, 8);
-        out[0] = aboutAxis(s, 8, axis1, ai);
+        aboutAxis(s, 8, axis1, ai, out, 0);
         double bx = w[wi] + w[wi + 3], by = w[wi + 1] + w[wi + 4], bz = w[wi + 2] + w[wi + 5];
         double l = 1 / Math.sqrt(bx * bx + by * by + bz * bz);
         s[12] = 0;
@@ -141,6 +157,7 @@ final class JointAngles {
         multiply(s, 12, false, s, 0, false, s, 4);
         multiply(q2, i2, true, s, 4, false, s, 8);
         multiply(s, 8, false, rest, ri + 4, true, s, 0);
-        out[1] = -aboutAxis(s, 0, axis2, ai);
+        aboutAxis(s, 0, axis2, ai, out, 2);
+        return true;
     }
 }

@@ -147,8 +147,9 @@ final class ProjectedSor {
 
     /**
      * One Gauss-Seidel sweep over the island's rows in {@link #order}. The two bodies' parts of
-     * J fc are summed pairwise rather than left to right: the sweep is bound by the latency of
-     * this sum, each row waiting for the fc its predecessor changed.
+     * J fc are summed pairwise rather than left to right, and each body's fc is read once: the
+     * sweep is bound by the latency of this sum, each row waiting for the fc its predecessor
+     * changed.
      */
     private void sweep(ConstraintRows rows, int m) {
         double[] d = rows.data;
@@ -158,18 +159,23 @@ final class ProjectedSor {
         for (int k = 0; k < m; k++) {
             int i = order[k];
             int o = STRIDE * i;
-            int f1 = 6 * body1[i];
+            int a = 6 * body1[i];
             int b2 = body2[i];
-            double old = lambda[i];
-            double s1 = (f[f1] * d[o] + f[f1 + 1] * d[o + 1]) + (f[f1 + 2] * d[o + 2] + f[f1 + 3] * d[o + 3])
-                    + (f[f1 + 4] * d[o + 4] + f[f1 + 5] * d[o + 5]);
-            double s2 = 0;
-            int f2 = 6 * b2;
+            double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
+            double s = (a0 * d[o] + a1 * d[o + 1]) + (a2 * d[o + 2] + a3 * d[o + 3]) + (a4 * d[o + 4] + a5 * d[o + 5]);
+            int b = 6 * b2;
+            double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
             if (b2 >= 0) {
-                s2 = (f[f2] * d[o + 6] + f[f2 + 1] * d[o + 7]) + (f[f2 + 2] * d[o + 8] + f[f2 + 3] * d[o + 9])
-                        + (f[f2 + 4] * d[o + 10] + f[f2 + 5] * d[o + 11]);
+                c0 = f[b];
+                c1 = f[b + 1];
+                c2 = f[b + 2];
+                c3 = f[b + 3];
+                c4 = f[b + 4];
+                c5 = f[b + 5];
+                s += (c0 * d[o + 6] + c1 * d[o + 7]) + (c2 * d[o + 8] + c3 * d[o + 9]) + (c4 * d[o + 10] + c5 * d[o + 11]);
             }
-            double delta = (d[o + RHS] - old * d[o + CFM]) - (s1 + s2);
+            double old = lambda[i];
+            double delta = (d[o + RHS] - old * d[o + CFM]) - s;
             double lo, hi;
             int normal = findex[i];
             if (normal >= 0) {
@@ -188,19 +194,19 @@ final class ProjectedSor {
                 next = hi;
             }
             lambda[i] = next;
-            f[f1] += delta * d[o + IMJ1];
-            f[f1 + 1] += delta * d[o + IMJ1 + 1];
-            f[f1 + 2] += delta * d[o + IMJ1 + 2];
-            f[f1 + 3] += delta * d[o + IMJ1 + 3];
-            f[f1 + 4] += delta * d[o + IMJ1 + 4];
-            f[f1 + 5] += delta * d[o + IMJ1 + 5];
+            f[a] = a0 + delta * d[o + IMJ1];
+            f[a + 1] = a1 + delta * d[o + IMJ1 + 1];
+            f[a + 2] = a2 + delta * d[o + IMJ1 + 2];
+            f[a + 3] = a3 + delta * d[o + IMJ1 + 3];
+            f[a + 4] = a4 + delta * d[o + IMJ1 + 4];
+            f[a + 5] = a5 + delta * d[o + IMJ1 + 5];
             if (b2 >= 0) {
-                f[f2] += delta * d[o + IMJ2];
-                f[f2 + 1] += delta * d[o + IMJ2 + 1];
-                f[f2 + 2] += delta * d[o + IMJ2 + 2];
-                f[f2 + 3] += delta * d[o + IMJ2 + 3];
-                f[f2 + 4] += delta * d[o + IMJ2 + 4];
-                f[f2 + 5] += delta * d[o + IMJ2 + 5];
+                f[b] = c0 + delta * d[o + IMJ2];
+                f[b + 1] = c1 + delta * d[o + IMJ2 + 1];
+                f[b + 2] = c2 + delta * d[o + IMJ2 + 2];
+                f[b + 3] = c3 + delta * d[o + IMJ2 + 3];
+                f[b + 4] = c4 + delta * d[o + IMJ2 + 4];
+                f[b + 5] = c5 + delta * d[o + IMJ2 + 5];
             }
         }
     }

@@ -238,7 +238,8 @@ public final class RigidBodies {
     }
 
     private void clearAccumulators(int i) {
-        Arrays.fill(force, 3 * i, 3 * i + 3, 0);
-        Arrays.fill(torque, 3 * i, 3 * i + 3, 0);
+        int f = 3 * i;
+        force[f] = force[f + 1] = force[f + 2] = 0;
+        torque[f] = torque[f + 1] = torque[f + 2] = 0;
     }
 }

@@ -30,7 +30,7 @@ final class RowAssembly {
 
     private final double[] s = new double[24];
     private final double[] q = new double[16];
-    private final double[] angle = new double[2];
+    private final double[] rotation = new double[4];
 
     /** World-level ERP and CFM of the joints (ODE's world defaults), and of their stops. */
     private final double erp;
@@ -105,8 +105,8 @@ final class RowAssembly {
             }
             d[o + RHS] = k * (s[12] * s[v] + s[13] * s[v + 1] + s[14] * s[v + 2]);
         }
-        double theta = JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, 3 * j, q);
-        stop(rows, b1, b2, fps, theta, a.lower[3 * j], a.upper[3 * j], true, s, 0);
+        JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, 3 * j, q, rotation, 0);
+        rotationStop(a, 3 * j, rows, b1, b2, fps, rotation[0], rotation[1], 1, s, 0);
     }
 
     private void universal(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
@@ -130,9 +130,9 @@ final class RowAssembly {
         }
         d[o + RHS] = fps * erp * -k;
         JointAngles.universal(b.orientation, 4 * b1, b.orientation, 4 * b2, s, 0, a.crossAtRest, 8 * j, a.axis1, a.axis2, 3 * j,
-                angle, q);
-        stop(rows, b1, b2, fps, angle[0], a.lower[3 * j], a.upper[3 * j], true, s, 0);
-        stop(rows, b1, b2, fps, angle[1], a.lower[3 * j + 1], a.upper[3 * j + 1], true, s, 3);
+                rotation, q);
+        rotationStop(a, 3 * j, rows, b1, b2, fps, rotation[0], rotation[1], 1, s, 0);
+        rotationStop(a, 3 * j + 1, rows, b1, b2, fps, rotation[2], rotation[3], -1, s, 3);
     }
 
     private void eulerLimits(Articulation a, int j, ConstraintRows rows, double fps, double[] angles, double[] dofAxes) {
@@ -143,20 +143,32 @@ final class RowAssembly {
             s[15] = x * l;
             s[16] = y * l;
             s[17] = z * l;
-            stop(rows, a.body1[j], a.body2[j], fps, angles[dof], a.lower[3 * j + i], a.upper[3 * j + i], false, s, 15);
+            stop(rows, a.body1[j], a.body2[j], fps, angles[dof], a.lower[3 * j + i], a.upper[3 * j + i], s, 15);
         }
     }
 
     /**
-     * A stop row about the unit axis at {@code ai} when {@code angle} is at or past a stop;
-     * {@code checked} stops (a hinge's, a universal joint's) are tested only when they lie within
-     * half a turn of the zero angle, as ODE tests them.
+     * The stop {@code k} of a hinge or universal joint at the angle {@code sign} times the
+     * rotation (sinHalf, cosHalf) of {@link JointAngles}: tested as ODE tests it, only when the
+     * stops lie within half a turn of the zero angle, first by the half angle's tangent (which
+     * orders angles as they are ordered), the angle itself taken only at a stop.
      */
-    private void stop(ConstraintRows rows, int b1, int b2, double fps, double angle, double lo, double hi, boolean checked,
-            double[] axis, int ai) {
-        if (checked && !((lo >= -Math.PI || hi <= Math.PI) && lo <= hi)) {
+    private void rotationStop(Articulation a, int k, ConstraintRows rows, int b1, int b2, double fps, double sinHalf, double cosHalf,
+            double sign, double[] axis, int ai) {
+        double lo = a.lower[k], hi = a.upper[k];
+        if (!((lo >= -Math.PI || hi <= Math.PI) && lo <= hi)) {
             return;
         }
+        double t = sign * JointAngles.halfTangent(sinHalf, cosHalf);
+        double tLo = a.lowerHalfTangent[k], tHi = a.upperHalfTangent[k];
+        // a relative margin of 1e-9 leaves the decision at a tie to the angle itself
+        if (t <= tLo + 1e-9 * (1 + Math.abs(tLo)) || t >= tHi - 1e-9 * (1 + Math.abs(tHi))) {
+            stop(rows, b1, b2, fps, sign * JointAngles.angle(sinHalf, cosHalf), lo, hi, axis, ai);
+        }
+    }
+
+    /** A stop row about the unit axis at {@code ai} when {@code angle} is at or past a stop. */
+    private void stop(ConstraintRows rows, int b1, int b2, double fps, double angle, double lo, double hi, double[] axis, int ai) {
         int limit;
         double error;
         if (angle <= lo) {
