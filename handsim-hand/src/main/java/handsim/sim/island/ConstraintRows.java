@@ -19,7 +19,6 @@ final class ConstraintRows {
     int[] body2;
     /** The normal row whose impulse bounds this friction row, -1 for none. */
     int[] findex;
-    double[] lambda;
     int count;
 
     ConstraintRows(int capacity) {
@@ -31,7 +30,6 @@ final class ConstraintRows {
         body1 = body1 == null ? new int[capacity] : Arrays.copyOf(body1, capacity);
         body2 = body2 == null ? new int[capacity] : Arrays.copyOf(body2, capacity);
         findex = findex == null ? new int[capacity] : Arrays.copyOf(findex, capacity);
-        lambda = lambda == null ? new double[capacity] : Arrays.copyOf(lambda, capacity);
     }
 
     int capacity() {

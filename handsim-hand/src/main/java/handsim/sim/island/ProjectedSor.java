@@ -30,7 +30,13 @@ final class ProjectedSor {
     final double[] fc;
     /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
     private final double[] free;
-    private int[] order = new int[64];
+    /** The island's rows in their first sweep order (see {@link #pack}), and per row its body offsets and normal row. */
+    private double[] data = new double[0];
+    private int[] meta = new int[0];
+    private double[] lambda = new double[0];
+    private int[] order = new int[0];
+    /** Each assembled row's index in {@link #data}. */
+    private int[] position = new int[0];
 
     ProjectedSor(int bodyCount) {
         fc = new double[6 * bodyCount];
@@ -47,39 +53,32 @@ final class ProjectedSor {
         }
     }
 
-    /** Solves rows [start, end) (one island) in {@code iterations} sweeps; adds their effect to {@link #fc}. */
+    /**
+     * Solves rows [start, end) (one island) in {@code iterations} sweeps; adds their effect to
+     * {@link #fc}. The rows are copied in their sweep order (rows without friction bounds first)
+     * into the solver's own arrays, so that a sweep reads them one after another.
+     */
     void solve(ConstraintRows rows, int start, int end, RigidBodies bodies, double h, int iterations, double sor,
             ShuffleRandom random) {
         int m = end - start;
         if (m == 0) {
             return;
         }
+        pack(rows, start, m);
         double rh = 1 / h;
-        double[] d = rows.data;
-        int frictionRows = 0;
-        for (int i = start; i < end; i++) {
-            int o = STRIDE * i;
+        double[] d = data;
+        for (int k = 0; k < m; k++) {
+            int o = STRIDE * k;
             d[o + RHS] *= rh;
             d[o + CFM] *= rh;
-            frictionRows += rows.findex[i] >= 0 ? 1 : 0;
-            rows.lambda[i] = 0;
+            lambda[k] = 0;
+            order[k] = k;
         }
-        for (int i = start; i < end; i++) {
-            addFreeMotion(d, STRIDE * i, rows.body1[i], rows.body2[i]);
+        for (int k = 0; k < m; k++) {
+            addFreeMotion(d, STRIDE * k, meta[3 * k], meta[3 * k + 1]);
         }
-        for (int i = start; i < end; i++) {
-            scale(d, STRIDE * i, rows.body1[i], rows.body2[i], bodies, sor);
-        }
-        if (order.length < m) {
-            order = new int[Math.max(m, 2 * order.length)];
-        }
-        int head = 0, tail = m - frictionRows;
-        for (int i = start; i < end; i++) {
-            if (rows.findex[i] < 0) {
-                order[head++] = i;
-            } else {
-                order[tail++] = i;
-            }
+        for (int k = 0; k < m; k++) {
+            scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
         }
         for (int it = 0; it < iterations; it++) {
             if (it >= SHUFFLE_PERIOD && it % SHUFFLE_PERIOD == 0) {
@@ -90,35 +89,65 @@ final class ProjectedSor {
                     order[swap] = t;
                 }
             }
-            sweep(rows, m);
+            sweep(m);
         }
     }
 
-    /** rhs += J (-(v/h + M^-1 f)) of the row's bodies. */
-    private void addFreeMotion(double[] d, int o, int b1, int b2) {
-        double sum = 0;
-        int f = 6 * b1;
-        for (int k = 0; k < 6; k++) {
-            sum += d[o + J1 + k] * free[f + k];
+    /**
+     * Copies rows [start, start + m) into {@link #data} in their first sweep order, rows without
+     * a friction index first, each group in assembly order; {@link #meta} holds each row's 6 b1,
+     * 6 b2 (-1 without a body 2) and the packed index of its normal row (-1 for none).
+     */
+    private void pack(ConstraintRows rows, int start, int m) {
+        if (order.length < m) {
+            int n = Math.max(m, 2 * order.length);
+            order = new int[n];
+            position = new int[n];
+            lambda = new double[n];
+            meta = new int[3 * n];
+            data = new double[STRIDE * n];
         }
-        if (b2 >= 0) {
-            f = 6 * b2;
+        int frictionRows = 0;
+        for (int i = start; i < start + m; i++) {
+            frictionRows += rows.findex[i] >= 0 ? 1 : 0;
+        }
+        int head = 0, tail = m - frictionRows;
+        for (int i = start; i < start + m; i++) {
+            int p = rows.findex[i] < 0 ? head++ : tail++;
+            position[i - start] = p;
+            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p, STRIDE);
+            meta[3 * p] = 6 * rows.body1[i];
+            meta[3 * p + 1] = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
+        }
+        for (int i = start; i < start + m; i++) {
+            int f = rows.findex[i];
+            meta[3 * position[i - start] + 2] = f < 0 ? -1 : position[f - start];
+        }
+    }
+
+    /** rhs += J (-(v/h + M^-1 f)) of the row's bodies (at fc offsets a, b). */
+    private void addFreeMotion(double[] d, int o, int a, int b) {
+        double sum = 0;
+        for (int k = 0; k < 6; k++) {
+            sum += d[o + J1 + k] * free[a + k];
+        }
+        if (b >= 0) {
             for (int k = 0; k < 6; k++) {
-                sum += d[o + J2 + k] * free[f + k];
+                sum += d[o + J2 + k] * free[b + k];
             }
         }
         d[o + RHS] += sum;
     }
 
     /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
-    private static void scale(double[] d, int o, int b1, int b2, RigidBodies bodies, double sor) {
-        inverseMassTimes(d, o + J1, o + IMJ1, b1, bodies);
+    private static void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
+        inverseMassTimes(d, o + J1, o + IMJ1, a / 6, bodies);
         double sum = 0;
         for (int k = 0; k < 6; k++) {
             sum += d[o + IMJ1 + k] * d[o + J1 + k];
         }
-        if (b2 >= 0) {
-            inverseMassTimes(d, o + J2, o + IMJ2, b2, bodies);
+        if (b >= 0) {
+            inverseMassTimes(d, o + J2, o + IMJ2, b / 6, bodies);
             for (int k = 0; k < 6; k++) {
                 sum += d[o + IMJ2 + k] * d[o + J2 + k];
             }
@@ -130,7 +159,7 @@ final class ProjectedSor {
         for (int k = 0; k < 6; k++) {
             d[o + J1 + k] *= ad;
         }
-        if (b2 >= 0) {
+        if (b >= 0) {
             for (int k = 0; k < 6; k++) {
                 d[o + J2 + k] *= ad;
             }
@@ -151,21 +180,20 @@ final class ProjectedSor {
      * sweep is bound by the latency of this sum, each row waiting for the fc its predecessor
      * changed.
      */
-    private void sweep(ConstraintRows rows, int m) {
-        double[] d = rows.data;
-        double[] lambda = rows.lambda;
-        int[] body1 = rows.body1, body2 = rows.body2, findex = rows.findex;
+    private void sweep(int m) {
+        double[] d = data;
+        double[] lambda = this.lambda;
+        int[] meta = this.meta;
         double[] f = fc;
         for (int k = 0; k < m; k++) {
             int i = order[k];
             int o = STRIDE * i;
-            int a = 6 * body1[i];
-            int b2 = body2[i];
+            int a = meta[3 * i];
+            int b = meta[3 * i + 1];
             double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
             double s = (a0 * d[o] + a1 * d[o + 1]) + (a2 * d[o + 2] + a3 * d[o + 3]) + (a4 * d[o + 4] + a5 * d[o + 5]);
-            int b = 6 * b2;
             double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
-            if (b2 >= 0) {
+            if (b >= 0) {
                 c0 = f[b];
                 c1 = f[b + 1];
                 c2 = f[b + 2];
@@ -177,7 +205,7 @@ final class ProjectedSor {
             double old = lambda[i];
             double delta = (d[o + RHS] - old * d[o + CFM]) - s;
             double lo, hi;
-            int normal = findex[i];
+            int normal = meta[3 * i + 2];
             if (normal >= 0) {
                 hi = Math.abs(d[o + HI] * lambda[normal]);
                 lo = -hi;
@@ -200,7 +228,7 @@ final class ProjectedSor {
             f[a + 3] = a3 + delta * d[o + IMJ1 + 3];
             f[a + 4] = a4 + delta * d[o + IMJ1 + 4];
             f[a + 5] = a5 + delta * d[o + IMJ1 + 5];
-            if (b2 >= 0) {
+            if (b >= 0) {
                 f[b] = c0 + delta * d[o + IMJ2];
                 f[b + 1] = c1 + delta * d[o + IMJ2 + 1];
                 f[b + 2] = c2 + delta * d[o + IMJ2 + 2];
