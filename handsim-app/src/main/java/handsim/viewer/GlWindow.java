@@ -1,7 +1,6 @@
 package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
-
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 

@@ -1,7 +1,6 @@
 package handsim.viewer;
 
 import static org.lwjgl.opengl.GL11.*;
-
 import handsim.mesh.Detail;
 import handsim.mesh.ShapeMeshes;
 import handsim.mesh.TriangleMesh;

@@ -2,7 +2,6 @@ package handsim.viewer;
 
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL30.*;
-
 import handsim.sim.WorldSnapshot;
 import java.awt.image.BufferedImage;
 import java.nio.ByteBuffer;

@@ -1,7 +1,6 @@
 package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
-
 import handsim.scene.LiveRun;
 import java.util.List;
 

@@ -1,6 +1,7 @@
 package handsim.evaluation;
 
 import handsim.task.BoxTask;
+import handsim.task.LoopRecord;
 
 import handsim.math.Vec3;
 import handsim.report.Plot;
@@ -24,8 +25,9 @@ public final class BoxTrials {
      * @param box the box centre (m, world)
      * @param distance its distance from the region's centre (m)
      * @param inARow hit-and-catch loops in a row before the test ended
+     * @param motion the motion figures over the trial's loops
      */
-    public record Trial(int index, long seed, Vec3 box, double distance, boolean success, int inARow) {
+    public record Trial(int index, long seed, Vec3 box, double distance, boolean success, int inARow, MotionQuality motion) {
     }
 
     private BoxTrials() {
@@ -35,8 +37,9 @@ public final class BoxTrials {
     public static Trial run(CatchEvaluation evaluation, BoxTask task, Simulator sim, int index, long seed, Vec3 box,
             int required) {
         task.placeAt(box);
-        int inARow = evaluation.successesInARow(evaluation.runWhileSuccessful(sim, seed, required));
-        return new Trial(index, seed, box, task.distanceFromRegionCenter(box), inARow >= required, inARow);
+        List<LoopRecord> loops = evaluation.runWhileSuccessful(sim, seed, required);
+        int inARow = evaluation.successesInARow(loops);
+        return new Trial(index, seed, box, task.distanceFromRegionCenter(box), inARow >= required, inARow, MotionQuality.of(loops));
     }
 
     /** Share of successful trials (NaN for none). */

@@ -11,6 +11,7 @@ import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
 import handsim.sim.ObjectSpec;
 import handsim.task.FlipTask;
+import handsim.task.Rest;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.io.IOException;
@@ -103,12 +104,12 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * learnerThrows.rest} of its DAgger run's config ({@link DaggerRunConfig.LearnerThrows});
      * fails when it was trained for every throw.
      */
-    public FlipTask.Rest restServed() {
+    public Rest restServed() {
         var rest = provenance.path("config").path("learnerThrows").path("rest");
         if (!rest.isTextual()) {
             throw new IllegalArgumentException("it was trained for every throw, not one rest (its provenance has no config.learnerThrows.rest)");
         }
-        return FlipTask.Rest.ofLabel(rest.asText());
+        return Rest.ofLabel(rest.asText());
     }
 
     /**

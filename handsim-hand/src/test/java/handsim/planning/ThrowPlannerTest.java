@@ -71,12 +71,12 @@ class ThrowPlannerTest {
     private CatchEvaluation nominalFlip(String object) {
         return CatchEvaluation.nominal(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                ((FlipTask) TestSupport.tasks().create("flip", object)).catchingAs(controller.catchStyle()).withoutArmRest());
+                TestSupport.configs().flip().newTask(object).catchingAs(controller.catchStyle()).withoutArmRest());
     }
 
     /** The nominal flip of {@code object}, its catch as {@code catching} says (null: the controller's own). */
     private static ThrowDecision nominalThrow(String object, CatchStyle catching) {
-        return new ThrowDecision(TestSupport.tasks().create("flip", object).nominalThrow(), catching);
+        return new ThrowDecision(TestSupport.configs().flip().newTask(object).nominalThrow(), catching);
     }
 
     private static Simulator engine() {

@@ -75,7 +75,7 @@ class ShippedPoliciesTest {
     /** An evaluation of {@code task} with {@code object} thrown by the shipped policy (and its opening, when one ships). */
     static CatchEvaluation evaluation(String task, String object) {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        ThrowTask t = TestSupport.tasks().create(task, object);
+        ThrowTask t = TestSupport.configs().task(task).newTask(object);
         Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,
