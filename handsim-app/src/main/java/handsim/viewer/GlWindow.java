@@ -1,6 +1,7 @@
 package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
+
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 

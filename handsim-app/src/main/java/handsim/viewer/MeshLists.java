@@ -1,6 +1,7 @@
 package handsim.viewer;
 
 import static org.lwjgl.opengl.GL11.*;
+
 import handsim.mesh.Detail;
 import handsim.mesh.ShapeMeshes;
 import handsim.mesh.TriangleMesh;

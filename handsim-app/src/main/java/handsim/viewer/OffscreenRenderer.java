@@ -2,6 +2,7 @@ package handsim.viewer;
 
 import static org.lwjgl.opengl.GL11.*;
 import static org.lwjgl.opengl.GL30.*;
+
 import handsim.sim.WorldSnapshot;
 import java.awt.image.BufferedImage;
 import java.nio.ByteBuffer;

@@ -1,6 +1,7 @@
 package handsim.viewer;
 
 import static org.lwjgl.opengl.GL11.*;
+
 import handsim.kin.Frame;
 import handsim.math.Quat;
 import handsim.math.Vec3;

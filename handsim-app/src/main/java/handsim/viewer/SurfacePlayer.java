@@ -2,6 +2,7 @@ package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
+
 import java.util.List;
 
 /**

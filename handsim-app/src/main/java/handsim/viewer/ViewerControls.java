@@ -1,6 +1,7 @@
 package handsim.viewer;
 
 import static org.lwjgl.glfw.GLFW.*;
+
 import handsim.scene.LiveRun;
 import java.util.List;
 

@@ -1,23 +1,26 @@
 package handsim.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.scene.HeightControl;
-import handsim.task.HeightGoals;
 import handsim.scene.InteractiveScene;
 import handsim.scene.SceneCatalog;
 import handsim.scene.SceneSetup;
+import handsim.task.HeightGoals;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -497,6 +500,52 @@ class CommandsTest {
                 .assertRefused(2, "objects.can.armRst: unknown field");
         CliRun.of("view", "--task", "flip", "--object", "can", "--task-set", "toleranceDeg=200").assertRefused(2, "toleranceDeg", "200");
         assertTrue(Files.notExists(none) && Files.notExists(dir.resolve("none.json.episodes.jsonl")), "nothing half-written");
+    }
+
+    @Test
+    void aRunRepeatsFromItsRecordedSpecAlone(@TempDir Path dir) throws Exception {
+        // the flip can run with a --task-set variant, recorded; its spec holds the options, the task's file as changed and
+        // every other document read: run again from the record alone it gives the same summary, key by key
+        Path first = dir.resolve("first.json");
+        runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "2", "--loops", "2", "--seed", "3", "--workers", "1",
+                "--task-set", "objects.can.armRest=null", "--json", first.toString());
+        JsonNode recorded = Json.load(first).node();
+        JsonNode spec = recorded.get("spec");
+        assertFalse(spec.get("configs").get("configs/tasks/flip.json").get("objects").get("can").has("armRest"),
+                "the task's file as the run read it: " + spec.get("configs").fieldNames());
+        for (String read : List.of("models/arm_hand.json", "configs/sim.json", "configs/controller.json", "configs/episode.json",
+                "configs/launch.json", "configs/objects/can.json", "configs/evaluation.json")) {
+            assertTrue(spec.get("configs").has(read), read + " is recorded");
+        }
+        Path again = dir.resolve("again.json");
+        runPrinting("evaluate", "--spec", first.toString(), "--workers", "2", "--json", again.toString());
+        ObjectNode a = (ObjectNode) recorded.deepCopy(), b = (ObjectNode) Json.load(again).node().deepCopy();
+        for (ObjectNode o : List.of(a, b)) {
+            o.remove(List.of("provenance", "wall_s", "workers")); // where and how fast it ran, not what it did
+        }
+        assertEquals(a, b, "the same run");
+        CliRun.of("evaluate", "--spec", first.toString(), "--seed", "4").assertRefused(2, "--seed goes without --spec");
+        CliRun.of("evaluate", "--spec", dir.resolve("none.json").toString()).assertRefused(2, "none.json");
+    }
+
+    @Test
+    void everyTasksSummaryReportsTheMotionQualityUnderTheSameKeys(@TempDir Path dir) throws Exception {
+        // joint-limit excess, penetration and peak torque ratio over all loops (paper sec. 4.1), for height, box and flip alike
+        List<String[]> runs = List.of(new String[] {"--task", "height", "--episodes", "1", "--loops", "1"},
+                new String[] {"--task", "box", "--tests", "1"}, new String[] {"--task", "flip", "--object", "can", "--episodes", "1",
+                        "--loops", "1"});
+        for (String[] run : runs) {
+            Path json = dir.resolve(run[1] + ".json");
+            List<String> args = new java.util.ArrayList<>(List.of("evaluate", "--seed", "2", "--workers", "1", "--json", json.toString()));
+            args.addAll(List.of(run));
+            runPrinting(args.toArray(String[]::new));
+            JsonNode summary = Json.load(json).node();
+            for (String key : List.of("max_limit_excess_deg", "max_penetration_mm", "peak_torque_ratio")) {
+                // penetration of a few mm at most and torques clamped at the human limits (ratio <= 1) in every shipped loop
+                assertTrue(summary.get(key).isNumber() && summary.get(key).asDouble() >= 0, run[1] + " " + key + ": " + summary.get(key));
+            }
+            assertTrue(summary.get("peak_torque_ratio").asDouble() <= 1 + 1e-9, run[1] + ": torques are clamped at their limits");
+        }
     }
 
     @Test

@@ -2,6 +2,7 @@ package handsim.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
 import handsim.config.Json;

@@ -3,6 +3,7 @@ package handsim.scene;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.Json;

@@ -3,6 +3,7 @@ package handsim.viewer;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import handsim.AppTestSupport;
 import handsim.TestSupport;
 import handsim.config.Home;

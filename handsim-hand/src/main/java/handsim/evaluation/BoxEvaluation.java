@@ -1,11 +1,10 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.task.BoxTask;
 import java.io.IOException;
 import java.util.ArrayList;

@@ -1,11 +1,10 @@
 package handsim.evaluation;
 
-import handsim.task.BoxTask;
-import handsim.task.LoopRecord;
-
 import handsim.math.Vec3;
 import handsim.report.Plot;
 import handsim.sim.Simulator;
+import handsim.task.BoxTask;
+import handsim.task.LoopRecord;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;

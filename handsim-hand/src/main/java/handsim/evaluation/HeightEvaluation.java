@@ -1,11 +1,10 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.task.EpisodeResult;
 import handsim.task.HeightTask;
 import handsim.task.LoopRecord;

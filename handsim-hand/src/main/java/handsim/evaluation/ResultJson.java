@@ -6,10 +6,10 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.control.ThrowParameters;
 import handsim.math.Vec3;
+import handsim.planning.ThrowPlanner;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeResult;
 import handsim.task.LoopRecord;
-import handsim.planning.ThrowPlanner;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -1,7 +1,5 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -9,6 +7,7 @@ import handsim.math.Vec3;
 import handsim.report.Plot;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
+import handsim.sim.Simulator;
 import handsim.task.LoopRecord;
 import handsim.task.ThrowTask;
 import java.io.IOException;
@@ -18,8 +17,8 @@ import java.util.Arrays;
 import java.util.DoubleSummaryStatistics;
 import java.util.List;
 import java.util.Locale;
-import java.util.stream.DoubleStream;
 import java.util.function.Supplier;
+import java.util.stream.DoubleStream;
 
 /**
  * How far a tiny difference carries through the loops (height or flip task): every episode run

@@ -1,13 +1,12 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.report.Outputs;
 import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.io.PrintStream;

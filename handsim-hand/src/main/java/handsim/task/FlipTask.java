@@ -5,21 +5,13 @@ import handsim.control.ArmRest;
 import handsim.control.CatchStyle;
 import handsim.control.ClosedLoopRelease;
 import handsim.control.ControllerConfig;
-import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
-import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
-import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.function.Predicate;
-import java.util.function.ToIntFunction;
 
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4). A flip is counted from the net

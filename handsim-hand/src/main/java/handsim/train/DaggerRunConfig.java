@@ -4,7 +4,6 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.learn.DaggerConfig;
 import handsim.planning.ThrowTeacher;
-import handsim.task.FlipTask;
 import handsim.task.Rest;
 import java.nio.file.Path;
 

@@ -1,7 +1,6 @@
 package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.report.Outputs;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
@@ -9,8 +8,8 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
+import handsim.report.Outputs;
 import handsim.sim.ObjectSpec;
-import handsim.task.FlipTask;
 import handsim.task.Rest;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;

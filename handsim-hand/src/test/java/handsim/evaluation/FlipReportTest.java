@@ -3,6 +3,7 @@ package handsim.evaluation;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+
 import handsim.TestSupport;
 import handsim.math.Vec3;
 import handsim.task.FlipTask;

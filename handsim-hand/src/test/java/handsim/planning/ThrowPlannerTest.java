@@ -1,13 +1,5 @@
 package handsim.planning;
 
-import handsim.evaluation.CatchEvaluation;
-import handsim.task.CatchLoopTest;
-import handsim.task.CatchThrowEpisode;
-import handsim.task.EpisodeLimits;
-import handsim.task.FlipTask;
-import handsim.task.LaunchDistribution;
-import handsim.task.LoopRecord;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -23,8 +15,14 @@ import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.control.Phase;
 import handsim.control.ThrowDecision;
+import handsim.evaluation.CatchEvaluation;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
+import handsim.task.CatchLoopTest;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.EpisodeLimits;
+import handsim.task.LaunchDistribution;
+import handsim.task.LoopRecord;
 import java.util.List;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
