@@ -181,6 +181,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", run.object());
+        out.set("controller_parts", run.controllerParts());
         if (!run.taskSet().isEmpty()) {
             out.set("task_set", run.toTaskSetJson());
         }
