@@ -44,11 +44,12 @@ final class DaggerCommand implements Callable<Integer> {
         }
         Json file = run.resume == null ? run.configFile() : null;
         DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
-        RunConfigs configs = TrainCommand.configs(c.run());
+        RunConfigs configs = run.resume == null ? TrainCommand.configs(c.run()) : TrainCommand.recorded(run.resume, c.run());
         ThrowEnvFactory envs = TrainCommand.environments(c.run(), configs);
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
                     : started(file, c, envs, rollouts);
+            TrainCommand.recordSpec(dagger.dir(), configs);
             try {
                 dagger.run(System.out);
             } catch (Dagger.TooFewLabels e) {

@@ -49,6 +49,7 @@ final class WarmstartCommand implements Callable<Integer> {
         double[] nominal = envs.space().toAction(configs.task(c.train().run().task()).newTask(c.train().run().object()).nominalThrow());
         Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
+        TrainCommand.recordSpec(dir, configs);
         Outputs.writeJson(dir.resolve("run.json"),
                 RunOptions.provenance(RunOptions.commandLine("warmstart", config, overrides), c.train().learner().seed()));
         System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "

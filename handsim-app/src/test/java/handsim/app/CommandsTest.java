@@ -669,6 +669,13 @@ class CommandsTest {
         Path run = Path.of(Files.readString(told));
         assertTrue(run.isAbsolute() && run.startsWith(dir.resolve("runs").toAbsolutePath()), run.toString());
         assertTrue(Files.isRegularFile(run.resolve("policy.json")), "the folder named is the run's: " + run);
+        // the folder records every configuration document the run read, the resume plays in them
+        JsonNode spec = Json.load(run.resolve(TrainCommand.SPEC)).node();
+        for (String read : List.of("models/arm_hand.json", "configs/sim.json", "configs/controller.json", "configs/tasks/height.json",
+                "configs/objects/sphere.json")) {
+            assertTrue(spec.has(read), read + " is recorded: " + spec.fieldNames());
+        }
+        assertEquals(Json.load(handsim.config.Home.resolve("configs/sim.json")).node(), spec.get("configs/sim.json"), "as the file reads");
     }
 
     @Test
