@@ -121,7 +121,8 @@ final class EvaluateCommand implements Callable<Integer> {
         EvaluationSetup setup = new EvaluationSetup(configs.controller(), configs.object(run.object()), configs.limits(),
                 configs.launches(), configs.evaluation(), run.throwPolicies(), run.plan() ? configs.planner(run.object()) : null,
                 Wiring::twinSimulator, exported, null, System.out);
-        configs.model(); // every document read before the journal records them
+        configs.model(); // the engine's documents too: every document read before the journal records them
+        configs.sim();
         ObjectNode record = run.toJson();
         EpisodeJournal journal = json == null ? null : openJournal(record, commit);
         long t0 = System.nanoTime();
