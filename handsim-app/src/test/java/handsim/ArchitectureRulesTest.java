@@ -69,7 +69,7 @@ class ArchitectureRulesTest {
             Map.entry("handsim.sim.ode", Set.of("math", "model", "kin", "sim")),
             Map.entry("handsim.mesh", Set.of("math", "model")),
             Map.entry("handsim.report", Set.of("config")),
-            Map.entry("handsim.rollout", Set.of()),
+            Map.entry("handsim.rollout", Set.of("report")),
             Map.entry("handsim.control", Set.of("math", "config", "model", "kin", "sim")),
             Map.entry("handsim.task", Set.of("math", "config", "model", "kin", "sim", "control")),
             Map.entry("handsim.planning", Set.of("math", "config", "sim", "control", "task")),
@@ -77,7 +77,7 @@ class ArchitectureRulesTest {
             Map.entry("handsim.scene", Set.of("math", "config", "model", "kin", "sim", "control", "task", "planning", "evaluation")),
             Map.entry("handsim.learn", Set.of("config", "report", "rollout")),
             Map.entry("handsim.train", Set.of("math", "config", "sim", "control", "task", "planning", "evaluation", "rollout", "learn", "report")),
-            Map.entry("handsim.export", Set.of("math", "model", "kin", "mesh", "sim", "task")),
+            Map.entry("handsim.export", Set.of("math", "model", "kin", "mesh", "sim", "task", "report")),
             Map.entry("handsim.viewer", Set.of("math", "config", "model", "kin", "mesh", "sim", "task", "scene", "export", "report")),
             Map.entry("handsim.cards.*", Set.of("config", "report")),
             Map.entry("handsim.app", Set.of("*")));

@@ -17,7 +17,9 @@
  * }</pre>
  *
  * Workers of one JVM must not share engine state: ode4j's statics (its random generator above
- * all) are per class loader, hence {@code handsim.sim.ode.IsolatedEngine}. Imports nothing of
- * handsim: what a worker owns is a type parameter.
+ * all) are per class loader, hence {@code handsim.sim.ode.IsolatedEngine}. A stop request
+ * ({@code handsim.report.Stop}: SIGTERM, SIGINT) ends a run at once, leaving the rollouts under
+ * way to their workers. Imports {@code handsim.report} only: what a worker owns is a type
+ * parameter.
  */
 package handsim.rollout;
