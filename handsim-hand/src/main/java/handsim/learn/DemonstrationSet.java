@@ -1,11 +1,10 @@
 package handsim.learn;
 
-import java.io.BufferedWriter;
+import handsim.report.Outputs;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -115,11 +114,9 @@ public final class DemonstrationSet {
         }
     }
 
+    /** Appends rows, forced to disk ({@link Outputs#append}). */
     private static void write(Path to, CharSequence text) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(to, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND)) {
-            w.append(text);
-        }
+        Outputs.append(to, text.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     private String header() {
