@@ -9,14 +9,13 @@ import handsim.cards.tpe.Pareto;
 import handsim.cards.tpe.TpeSampler;
 import handsim.config.ConfigException;
 import handsim.config.Json;
-import java.io.FileOutputStream;
+import handsim.report.Locks;
+import handsim.report.Outputs;
+import handsim.report.Stop;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Iterator;
@@ -33,6 +32,8 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorCompletionService;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -70,6 +71,8 @@ public final class Study {
     public static final String BEST_FILE = "best.json";
     private static final Pattern TRIAL_FILE = Pattern.compile("trial-(\\d+)\\.json");
     private static final String FORMAT = "handsim cards study 1";
+    /** How often the study, waiting for a trial, looks for a stop request (ms). */
+    private static final long STOP_POLL_MILLIS = 100;
 
     private final Path dir;
     private final StudyConfig config;
@@ -88,9 +91,10 @@ public final class Study {
     }
 
     /**
-     * Opens the study in {@code dir} to run it: creates it when the folder has no study.json,
-     * resumes it otherwise, which requires the same config and seed (else a
-     * {@link ConfigException} naming the field). {@code provenance} (command line, commit, ...)
+     * Opens the study in {@code dir} to run it, holding the folder for this process alone
+     * ({@link Locks}: a second process is refused at once): creates it when the folder has no
+     * study.json, resumes it otherwise, which requires the same config and seed (else a
+     * {@link ConfigException} naming the field), and trial files inside the search space. {@code provenance} (command line, commit, ...)
      * is recorded in study.json for this run.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode provenance) throws IOException {
@@ -104,6 +108,8 @@ public final class Study {
      * ones this objective gives otherwise.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode objective, ObjectNode provenance) throws IOException {
+        Files.createDirectories(dir);
+        Locks.holdFolder(dir, "the study folder " + dir, note -> System.out.println("handsim: " + note));
         Path file = dir.resolve(STUDY_FILE);
         Study study;
         if (Files.exists(file)) {
@@ -233,10 +239,11 @@ public final class Study {
         });
         CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
         TreeSet<Integer> running = new TreeSet<>();
-        try {
+        try (Stop.Watch watch = Stop.watch()) {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers; k = nextToStart(nTrials, running)) {
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers && !Stop.requested();
+                        k = nextToStart(nTrials, running)) {
                     double[] params = suggest(k);
                     int number = k;
                     running.add(k);
@@ -249,6 +256,9 @@ public final class Study {
                     break;
                 }
                 last = result(done);
+                if (last == null) {
+                    break; // a stop was requested: the trials under way are abandoned (they run again on resume)
+                }
                 running.remove(last.number());
                 finished.put(last.number(), last);
                 writeJson(trialFile(last.number()), last.toJson(config));
@@ -258,6 +268,7 @@ public final class Study {
             pool.shutdownNow();
             writeReport();
         }
+        Stop.check(finished.size() + " trials finished, kept in " + dir + " (the same command goes on from them)");
         log.end();
     }
 
@@ -305,8 +316,15 @@ public final class Study {
         Evaluation e;
         try {
             e = objective.evaluate(TrialParams.of(number, config, x));
+        } catch (Stop.Stopped stopped) {
+            throw stopped;
         } catch (Exception ex) {
-            return TrialRecord.failed(number, x, ex.toString(), (System.nanoTime() - t0) * 1e-9);
+            // a trial past its budget says why in its message; anything else is named by its class too
+            String why = ex instanceof Objective.TrialFailed ? ex.getMessage() : ex.toString();
+            return TrialRecord.failed(number, x, why, (System.nanoTime() - t0) * 1e-9);
+        } catch (OutOfMemoryError oom) {
+            // what the trial allocated is garbage once its stack is gone: the study goes on without it
+            return TrialRecord.failed(number, x, "out of memory (" + oom.getMessage() + ")", (System.nanoTime() - t0) * 1e-9);
         }
         double seconds = (System.nanoTime() - t0) * 1e-9;
         double[] values = e.values();
@@ -322,9 +340,16 @@ public final class Study {
         return TrialRecord.complete(number, x, e, seconds);
     }
 
+    /** The next trial to finish, or null when a stop is requested first. */
     private static TrialRecord result(CompletionService<TrialRecord> done) throws InterruptedException {
+        Future<TrialRecord> next;
+        while ((next = done.poll(STOP_POLL_MILLIS, TimeUnit.MILLISECONDS)) == null) {
+            if (Stop.requested()) {
+                return null;
+            }
+        }
         try {
-            return done.take().get();
+            return next.get();
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
             if (cause instanceof RuntimeException r) {
@@ -362,18 +387,9 @@ public final class Study {
         writeJson(dir.resolve(BEST_FILE), root);
     }
 
-    /**
-     * Writes a JSON file atomically (a temporary file moved into place) with plain streams, which,
-     * unlike NIO channels, an interrupt of the writing thread does not break off.
-     */
+    /** Writes a JSON file atomically ({@link Outputs}), as it was always written (pretty, a line break at the end). */
     private static void writeJson(Path file, JsonNode node) throws IOException {
-        Path abs = file.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
-        try (OutputStream out = new FileOutputStream(tmp.toFile())) {
-            out.write((Json.pretty(node) + "\n").getBytes(StandardCharsets.UTF_8));
-        }
-        Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writeString(file, Json.pretty(node) + "\n");
     }
 
     /** The first place where two JSON trees differ, as "path: a vs b"; null if equal. */
