@@ -141,6 +141,7 @@ final class EvaluateCommand implements Callable<Integer> {
         EpisodeJournal journal = null;
         if (json != null) {
             journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature(), commit);
+            StopRecords.evaluation(json, journal, spec.commandLine().getParseResult().originalArgs(), commit);
             if (journal.finished() > 0) {
                 System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
                         journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
@@ -271,7 +272,8 @@ final class EvaluateCommand implements Callable<Integer> {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
-        new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
+        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : json.resolveSibling(json.getFileName()
+                + ".episodes.jsonl")).file("--csv", csv).file("--plot", plot).check();
     }
 
     /** The --task-set fields, in order. */

@@ -64,6 +64,7 @@ final class ExportCommand implements Callable<Integer> {
                     + "(an animation needs two)", scene.seconds, rate));
         }
         ExportTarget target = ExportTarget.of(out, format, "--out", "--format");
+        new OutputPaths().files("--out", target.files()).check();
         ViewerConfig config = ViewerSession.config();
         ExportOptions options = ExportLook.options(config, floor, goal, camera ? Optional.of(new Camera(config.camera())) : Optional.empty());
         long t0 = System.nanoTime();

@@ -31,7 +31,12 @@ final class RunExport implements CatchEvaluation.TickWatcher {
 
     /** The export to {@code file}, checked now; null when no file is given. */
     static RunExport to(Path file) {
-        return file == null ? null : new RunExport(ExportTarget.of(file, null, "--export", "--export"));
+        if (file == null) {
+            return null;
+        }
+        ExportTarget target = ExportTarget.of(file, null, "--export", "--export");
+        new OutputPaths().files("--export", target.files()).check();
+        return new RunExport(target);
     }
 
     @Override

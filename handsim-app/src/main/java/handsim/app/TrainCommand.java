@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.model.HandModel;
+import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
@@ -17,7 +18,6 @@ import handsim.train.ThrowEnvFactory;
 import handsim.train.TrainConfig;
 import handsim.train.TrainRun;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.util.concurrent.Callable;
@@ -82,6 +82,9 @@ final class TrainCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
                     + "with --set training.episodes=N");
         }
+        if (run.resume != null) {
+            RunFolders.hold("--resume", run.resume); // one process at a time on a run folder
+        }
         TrainConfig c = run.resume == null ? TrainConfig.parse(run.configFile()) : TrainRun.savedConfig(run.resume);
         HandModel model = Wiring.model(null);
         SimConfig simConfig = Wiring.simConfig();
@@ -98,7 +101,7 @@ final class TrainCommand implements Callable<Integer> {
     private static void tellLauncher(Path dir) throws IOException {
         String file = System.getProperty(RUN_DIR_FILE_PROPERTY);
         if (file != null) {
-            Files.writeString(Path.of(file), dir.toAbsolutePath().toString());
+            Outputs.writeString(Path.of(file), dir.toAbsolutePath().toString());
         }
     }
 
