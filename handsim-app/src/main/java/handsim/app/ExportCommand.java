@@ -63,6 +63,7 @@ final class ExportCommand implements Callable<Integer> {
             throw new IllegalArgumentException(String.format(Locale.ROOT, "--seconds %s is shorter than one sample at --rate %s Hz "
                     + "(an animation needs two)", scene.seconds, rate));
         }
+        new OutputPaths().file("--out", out).check(); // first: the folder it makes is given up again if the export fails
         ExportTarget target = ExportTarget.of(out, format, "--out", "--format");
         new OutputPaths().files("--out", target.files()).check();
         ViewerConfig config = ViewerSession.config();

@@ -1,7 +1,6 @@
 package handsim.app;
 
 import handsim.config.Home;
-import handsim.config.ReadLog;
 import handsim.report.Locks;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -25,8 +24,8 @@ import picocli.CommandLine.ParseResult;
  * command will write is declared here, and each must be:
  * <ul>
  *   <li>not an input of the run: not a file another option names ({@code evaluate --policy P
- *       --json P}), nor one read already, nor one the command declares it reads ({@link
- *       #input}), nor anything under the project's {@code models/} and {@code configs/};</li>
+ *       --json P}), nor one the command declares it reads ({@link #input}), nor anything under
+ *       the project's {@code models/} and {@code configs/};</li>
  *   <li>not another output of the run ({@code --csv F --json F});</li>
  *   <li>a plain file where a file is written, a folder where a folder is, of a name the file
  *       system takes (at most 255 bytes, less what the atomic write's temporary name adds);</li>
@@ -143,10 +142,17 @@ final class OutputPaths {
         if (p == null) {
             return;
         }
-        if (folder && Files.isDirectory(p)) {
-            Locks.holdFolder(p, option + " " + p, note -> System.out.println("handsim: " + note));
-        } else if (!folder && p.getParent() != null && Files.isDirectory(p.getParent()) && (!Files.exists(p) || Files.isRegularFile(p))) {
-            Locks.holdFile(p, option + " " + p, note -> System.out.println("handsim: " + note));
+        try {
+            if (folder && Files.isDirectory(p)) {
+                Locks.holdFolder(p, option + " " + p, note -> System.out.println("handsim: " + note));
+            } else if (!folder && p.getParent() != null && Files.isDirectory(p.getParent())
+                    && (!Files.exists(p) || Files.isRegularFile(p))) {
+                Locks.holdFile(p, option + " " + p, note -> System.out.println("handsim: " + note));
+            }
+        } catch (Locks.Held inUse) {
+            throw inUse;
+        } catch (IllegalArgumentException cannotLock) {
+            // a path that cannot take a lock file (a name too long, a folder not writable): the command's check says why
         }
     }
 
@@ -276,7 +282,6 @@ final class OutputPaths {
             }
         }
         DECLARED_INPUTS.forEach(path -> inputs.put(path, "the file " + path));
-        ReadLog.paths().forEach(path -> inputs.putIfAbsent(path, "the file " + path + " (read by this run)"));
         for (Map.Entry<Path, String> in : inputs.entrySet()) {
             if (Files.isDirectory(in.getKey())) {
                 continue; // an input folder: what the run reads inside it is declared with input()

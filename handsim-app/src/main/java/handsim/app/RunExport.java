@@ -34,6 +34,7 @@ final class RunExport implements CatchEvaluation.TickWatcher {
         if (file == null) {
             return null;
         }
+        new OutputPaths().file("--export", file).check(); // first: the folder it makes is given up again if the run fails
         ExportTarget target = ExportTarget.of(file, null, "--export", "--export");
         new OutputPaths().files("--export", target.files()).check();
         return new RunExport(target);

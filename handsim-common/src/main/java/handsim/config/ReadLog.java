@@ -34,11 +34,6 @@ public final class ReadLog {
         return out;
     }
 
-    /** The absolute paths of the files read so far (what a run must not write over). */
-    public static java.util.Set<Path> paths() {
-        return java.util.Set.copyOf(READ.keySet());
-    }
-
     /** The SHA-256 of {@code bytes}, in hex. */
     public static String sha256(byte[] bytes) {
         try {

@@ -33,7 +33,12 @@ public final class SnapTrial {
 
     /** A trial with no budget ({@link TrialBudget#UNLIMITED}). */
     public SnapTrial(SnapConfig config, Materials materials, SolverSettings settings) {
-        this(config, materials, settings, TrialBudget.UNLIMITED, Json.mapper().createObjectNode());
+        this(config, materials, settings, TrialBudget.UNLIMITED);
+    }
+
+    /** A trial whose simulations (the hold, each run) are limited to {@code budget}. */
+    public SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget) {
+        this(config, materials, settings, budget, Json.mapper().createObjectNode());
     }
 
     private SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget, ObjectNode inputs) {
