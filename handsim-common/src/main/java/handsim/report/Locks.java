@@ -199,7 +199,7 @@ public final class Locks {
                 + WHEN.format(LocalDateTime.ofInstant(started, ZoneId.systemDefault())) + "\n";
     }
 
-    /** {@code pid 123, scripts/handsim demo ..., started 2025-01-02 10:11:12} from a lock file's text. */
+    /** {@code pid 123, scripts/handsim demo ..., started yyyy-MM-dd HH:mm:ss} from a lock file's text. */
     private static String describeHolder(String text) {
         Map<String, String> fields = new LinkedHashMap<>();
         text.lines().forEach(line -> {

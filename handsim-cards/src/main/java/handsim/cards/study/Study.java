@@ -81,6 +81,8 @@ public final class Study {
     private final ObjectNode studyJson;
     /** Finished trials (complete or failed) by number. */
     private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
+    /** Whether study.json records this run already ({@link #recordRun}). */
+    private boolean runRecorded;
 
     private Study(Path dir, StudyConfig config, long seed, ObjectNode studyJson) {
         this.dir = dir;
@@ -140,8 +142,15 @@ public final class Study {
         ObjectNode run = ((ArrayNode) study.studyJson.get("runs")).addObject();
         run.put("finishedBefore", study.finished.size());
         run.set("provenance", provenance.deepCopy());
-        writeJson(file, study.studyJson);
-        return study;
+        return study; // study.json is written when the study runs: a command that fails before (its hold) leaves nothing
+    }
+
+    /** Writes study.json with this run recorded, once, as the study starts its trials. */
+    private void recordRun() throws IOException {
+        if (!runRecorded) {
+            writeJson(dir.resolve(STUDY_FILE), studyJson);
+            runRecorded = true;
+        }
     }
 
     /** Reads an existing study (its config, seed and finished trials) without running it. */
@@ -230,6 +239,7 @@ public final class Study {
         if (workers < 1) {
             throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
         }
+        recordRun();
         Progress log = new Progress(progress, this, nTrials);
         log.start(workers);
         ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
