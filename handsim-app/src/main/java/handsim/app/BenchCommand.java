@@ -1,23 +1,23 @@
 package handsim.app;
 
-import handsim.report.Outputs;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.evaluation.CatchEvaluation;
 import handsim.kin.Frame;
 import handsim.model.HandModel;
 import handsim.model.Site;
+import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.sim.StepAccounting;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
-import handsim.task.Tasks;
 import handsim.task.HeldBallScenario;
 import handsim.task.ServoLoop;
+import handsim.taskdef.HeightDefinition;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
 import java.util.List;
@@ -96,7 +96,7 @@ final class BenchCommand implements Callable<Integer> {
         if (workers < 1 || workers > 256) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
-        HeightTask.Config height = Tasks.heightConfig();
+        HeightTask.Config height = heightDefinition().config();
         if (!height.allowsGoal(throwHeight)) {
             throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }
@@ -188,7 +188,9 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
     private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
-        CatchEvaluation evaluation = Wiring.nominalEvaluation(episodeOptions.object, Wiring.heightTask(HeightGoals.fixed(throwHeight)));
+        HeightTask task = heightDefinition().newTask(HeightGoals.fixed(throwHeight));
+        CatchEvaluation evaluation = CatchEvaluation.nominal(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(),
+                Wiring.object(episodeOptions.object), task);
         long warmSteps = Math.round(warmup / sim.config().timeStep());
         long measuredSteps = Math.round(seconds / sim.config().timeStep());
         long s = firstSeed;
@@ -364,5 +366,10 @@ final class BenchCommand implements Callable<Integer> {
         d.add(now.stepNanos() - from.stepNanos(), now.collisionNanos() - from.collisionNanos(),
                 now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes());
         return d;
+    }
+
+    /** The shipped height task's definition. */
+    private static HeightDefinition heightDefinition() {
+        return Wiring.shipped().height();
     }
 }

@@ -3,10 +3,9 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.Dagger;
-import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
-import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
+import handsim.spec.RunConfigs;
 import handsim.train.DaggerRun;
 import handsim.train.DaggerRunConfig;
 import handsim.train.ThrowEnvFactory;
@@ -48,12 +47,12 @@ final class DaggerCommand implements Callable<Integer> {
         }
         Json file = run.resume == null ? run.configFile() : null;
         DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
-        HandModel model = Wiring.model(null);
-        SimConfig simConfig = Wiring.simConfig();
-        ThrowEnvFactory envs = TrainCommand.environments(c.run(), model);
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
+        RunConfigs configs = run.resume == null ? TrainCommand.configs(c.run()) : TrainCommand.recorded(run.resume, c.run());
+        ThrowEnvFactory envs = TrainCommand.environments(c.run(), configs);
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
                     : started(file, c, envs, rollouts);
+            TrainCommand.recordSpec(dagger.dir(), configs);
             try {
                 dagger.run(System.out);
             } catch (Dagger.TooFewLabels e) {

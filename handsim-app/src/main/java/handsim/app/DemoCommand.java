@@ -3,18 +3,19 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
+import handsim.evaluation.CatchEvaluation;
 import handsim.report.Outputs;
 import handsim.report.Plot;
 import handsim.report.Stop;
+import handsim.scene.SceneSetup;
 import handsim.sim.Simulator;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeLimits;
 import handsim.task.HeightGoals;
-import handsim.task.Tasks;
 import handsim.task.HeightTask;
 import handsim.task.LoopRecord;
-import handsim.scene.SceneSetup;
+import handsim.taskdef.FlipDefinition;
+import handsim.taskdef.HeightDefinition;
 import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -79,7 +80,7 @@ final class DemoCommand implements Callable<Integer> {
     }
 
     static Path shippedPolicy(String object) {
-        return ThrowPolicyFile.shipped("height", object);
+        return ThrowPolicyFile.shipped(HeightDefinition.NAME, object);
     }
 
     @Override
@@ -102,7 +103,7 @@ final class DemoCommand implements Callable<Integer> {
             }
             String flipController = FlipDemo.shippedPolicy(object) != null ? "learned" : "nominal";
             if (!headless && ViewerSession.hasDisplay()) {
-                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null,
+                return ViewerSession.open("demo", new SceneSetup(FlipDefinition.NAME, object, flipController, seed), null,
                         ControllerOptions.Choice.SHIPPED, 0, null);
             }
             if (!headless) {
@@ -113,17 +114,17 @@ final class DemoCommand implements Callable<Integer> {
                     : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
             return 0;
         }
-        HeightGoals goals = heights != null ? parseHeights(heights) : Wiring.heightTask(null).goals();
+        HeightGoals goals = heights != null ? parseHeights(heights) : height().newTask((HeightGoals) null).goals();
         String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals,
+            return ViewerSession.open("demo", new SceneSetup(HeightDefinition.NAME, episodeOptions.object, controller, episodeOptions.seed), goals,
                     ControllerOptions.Choice.SHIPPED, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        HeightTask task = Wiring.heightTask(goals);
+        HeightTask task = height().newTask(goals);
         EpisodeLimits limits = Wiring.episodeLimits();
         CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), limits, Wiring.launches(),
                 Wiring.object(episodeOptions.object), task, controller.equals("learned")
@@ -239,10 +240,15 @@ final class DemoCommand implements Callable<Integer> {
         System.out.println("wrote " + dir.resolve("summary.json") + ", loops.csv, apex.png");
     }
 
+    /** The shipped height task's definition. */
+    private static HeightDefinition height() {
+        return Wiring.shipped().height();
+    }
+
     /** {@code LOW:HIGH} in metres, for {@code --heights}. */
     static HeightGoals parseHeights(String text) {
         String[] parts = text.split(":");
-        HeightTask.Config height = Tasks.heightConfig();
+        HeightTask.Config height = height().config();
         try {
             if (parts.length == 2 && height.allowsGoal(Double.parseDouble(parts[0])) && height.allowsGoal(Double.parseDouble(parts[1]))) {
                 return new HeightGoals(Double.parseDouble(parts[0]), Double.parseDouble(parts[1]));

@@ -59,7 +59,8 @@ final class OutputPaths {
     // ---- the command run: the paths its options name, what it declared, what the checks created ----
     /** The paths the command line names, each with its option (one path may be named by several). */
     private static final List<Map.Entry<Path, String>> OPTION_PATHS = new ArrayList<>();
-    private static final List<Path> DECLARED_INPUTS = new ArrayList<>();
+    /** The inputs no option names, each with what it is in words. */
+    private static final Map<Path, String> DECLARED_INPUTS = new LinkedHashMap<>();
     private static final Map<Path, String> OUTPUTS = new LinkedHashMap<>();
     /** Options that name outputs: handsim's commands name every output path with one of these, or declare it here. */
     private static final List<String> OUTPUT_OPTIONS = new ArrayList<>();
@@ -171,8 +172,13 @@ final class OutputPaths {
     }
 
     /** Declares a file the command reads that no option names (a run folder's metrics.csv): no output may be it. */
-    static synchronized void input(Path file) {
-        DECLARED_INPUTS.add(file.toAbsolutePath().normalize());
+    static void input(Path file) {
+        input(file, "the file " + file.toAbsolutePath().normalize());
+    }
+
+    /** {@link #input}, with what the file is in words ("the policy the run of --spec threw with"). */
+    static synchronized void input(Path file, String what) {
+        DECLARED_INPUTS.put(file.toAbsolutePath().normalize(), what);
     }
 
     /** Notes a folder the command created for its output (a run folder): removed again if the command fails and leaves it empty. */
@@ -281,7 +287,7 @@ final class OutputPaths {
                 inputs.putIfAbsent(named.getKey(), "the file of " + named.getValue());
             }
         }
-        DECLARED_INPUTS.forEach(path -> inputs.put(path, "the file " + path));
+        inputs.putAll(DECLARED_INPUTS);
         for (Map.Entry<Path, String> in : inputs.entrySet()) {
             if (Files.isDirectory(in.getKey())) {
                 continue; // an input folder: what the run reads inside it is declared with input()

@@ -1,9 +1,9 @@
 package handsim.app;
 
+import handsim.evaluation.CatchEvaluation;
 import handsim.export.ExportTarget;
 import handsim.export.MotionRecorder;
 import handsim.sim.Simulator;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.Goal;
 import handsim.viewer.Camera;
 import handsim.viewer.ExportLook;

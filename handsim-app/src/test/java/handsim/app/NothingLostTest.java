@@ -68,6 +68,20 @@ class NothingLostTest {
     }
 
     @Test
+    void aRecordedSpecAndThePoliciesItNamesAreInputsOfTheRunThatRepeatsIt() throws IOException {
+        // evaluate --spec reads the record and the policy files it names (checked against their SHA-256): none may be an output
+        Path policy = copy(Home.resolve("models/policies/height-sphere.json"), "P.json");
+        Path spec = Files.writeString(tmp.resolve("S.json"), "{\"task\": \"height\", \"controller\": \"learned\", \"object\": "
+                + "\"sphere\", \"plan\": false, \"seed\": 1, \"loops\": 1, \"episodes\": 1, \"tests\": 1, \"policies\": {\"policy\": "
+                + "{\"file\": \"" + policy + "\", \"sha256\": \"" + handsim.config.ReadLog.sha256(Files.readAllBytes(policy)) + "\"}}, "
+                + "\"configs\": {}}");
+        refused(List.of("evaluate", "--spec", spec.toString(), "--json", spec.toString()), "--json " + spec,
+                "is the file of --spec, an input of this run");
+        refused(List.of("evaluate", "--spec", spec.toString(), "--csv", policy.toString()), "--csv " + policy,
+                "is the policy recorded in --spec " + spec + ", an input of this run");
+    }
+
+    @Test
     void twoOutputsOfOneRunOnOnePathAreRefused() throws IOException {
         Path f = tmp.resolve("F");
         refused(List.of("evaluate", "--loops", "1", "--csv", f.toString(), "--json", f.toString()), "is also written as --json " + f);
@@ -75,7 +89,7 @@ class NothingLostTest {
                 "is also written as --json " + f + ".json.episodes.jsonl");
         Path glb = tmp.resolve("a/x.glb");
         refused(List.of("evaluate", "--loops", "1", "--export", glb.toString(), "--json", glb.toString()),
-                "--json " + glb + " is also written as --export " + glb);
+                "--json " + glb, "--export " + glb, "is also written as"); // whichever is checked second names the first
         assertFalse(Files.exists(glb.getParent()), "the folder the refused run made is gone again");
     }
 

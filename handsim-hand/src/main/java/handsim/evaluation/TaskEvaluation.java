@@ -1,14 +1,12 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.report.Outputs;
 import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
-import handsim.task.HeightGoals;
+import handsim.sim.Simulator;
 import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -17,7 +15,8 @@ import java.util.function.Function;
 
 /**
  * One kind of evaluation run: its episodes spread over the rollout workers, then its summary in
- * the JSON, the console, the CSV and the chart. {@link #of} picks the kind a request asks for.
+ * the JSON, the console, the CSV and the chart. A task's definition ({@code handsim.taskdef})
+ * picks the kind a request asks for.
  */
 public abstract class TaskEvaluation {
 
@@ -29,18 +28,6 @@ public abstract class TaskEvaluation {
         this.request = request;
         this.setup = setup;
         this.console = setup.console();
-    }
-
-    /** The evaluation {@code request} asks for: a sensitivity run with copies, else the task's. */
-    public static TaskEvaluation of(EvaluationRequest request, EvaluationSetup setup) {
-        if (request.copies() != null) {
-            return new SensitivityEvaluation(request, setup);
-        }
-        return switch (request.task()) {
-            case "box" -> new BoxEvaluation(request, setup);
-            case "flip" -> new FlipEvaluation(request, setup);
-            default -> new HeightEvaluation(request, setup);
-        };
     }
 
     /** Runs the episodes on {@code rollouts} and puts the summary into {@code out}. */
@@ -55,12 +42,6 @@ public abstract class TaskEvaluation {
     /** A progress line with the time left every configs/episode.json progressEveryLoops loops of an episode. */
     protected CatchEvaluation.LoopListener longEpisodeProgress() {
         return new LongEpisodeProgress(console, setup.limits().progressEveryLoops(), request.loops());
-    }
-
-    /** A worker's height goals: the requested ones in turn, one fixed height, or (null) seeded random ones. */
-    protected HeightGoals heightGoals() {
-        return request.heightGoals() != null ? HeightGoals.sequence(request.heightGoals())
-                : request.throwHeight() != null ? HeightGoals.fixed(request.throwHeight()) : null;
     }
 
     /**
