@@ -1,6 +1,7 @@
 package handsim.app;
 
 import handsim.config.ConfigException;
+import handsim.rollout.RemoteFailure;
 import handsim.sim.SimulationDiverged;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -31,7 +32,7 @@ public final class Main implements Runnable {
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             String failure = ex instanceof ConfigException || ex instanceof IllegalArgumentException ? ex.getMessage()
                     : ex instanceof SimulationDiverged ? "the simulation diverged: " + ex.getMessage()
-                    : ex instanceof RunFailed ? ex.getMessage()
+                    : ex instanceof RunFailed || ex instanceof RemoteFailure ? ex.getMessage()
                     : ex instanceof IOException io ? fileProblem(io)
                     : ex instanceof UncheckedIOException io ? fileProblem(io.getCause()) : null;
             if (failure == null) {

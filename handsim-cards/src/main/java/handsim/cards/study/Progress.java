@@ -19,10 +19,11 @@ final class Progress {
         this.nTrials = nTrials;
     }
 
-    void start(int workers) {
+    /** The first line; {@code where} says what runs the trials ("2 workers"). */
+    void start(String where) {
         StudyConfig c = study.config();
-        print(String.format(Locale.ROOT, "study %s: %d trials, %d finished, seed %d; %d workers, at most %d trials at once; %s, %d start-up trials",
-                study.dir(), nTrials, finishedInRange(), study.seed(), workers, c.parallelTrials(),
+        print(String.format(Locale.ROOT, "study %s: %d trials, %d finished, seed %d; %s, at most %d trials at once; %s, %d start-up trials",
+                study.dir(), nTrials, finishedInRange(), study.seed(), where, c.parallelTrials(),
                 c.multiObjective() ? "MOTPE" : "TPE", c.sampler().nStartupTrials()));
     }
 

@@ -28,11 +28,6 @@ import java.util.Optional;
 import java.util.SplittableRandom;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import java.util.concurrent.CompletionService;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorCompletionService;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -56,7 +51,8 @@ import java.util.stream.Stream;
  *   <li>it is suggested once every trial numbered 0 … k - P has finished, from those of them
  *       that completed, never from a later one that happens to have finished.</li>
  * </ul>
- * Trials start in number order on up to {@code workers} threads, at most P at a time. So the
+ * Trials start in number order on up to {@code workers} threads (or a cluster's executors:
+ * {@link TrialExecutor}), at most P at a time. So the
  * study's trials are the same for any number of workers, and a study resumed after a kill
  * continues exactly as if it had never stopped: finished trials are read back bit for bit, and
  * a trial that was running is run again with the same parameters. P = 1 is Optuna's sequential
@@ -218,29 +214,32 @@ public final class Study {
      * resume), the report is written and InterruptedException is thrown.
      */
     public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
-        if (nTrials < 1) {
-            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
-        }
         if (workers < 1) {
             throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
         }
+        try (TrialExecutor threads = new ThreadTrials(objective, config, workers)) {
+            run(threads, nTrials, progress);
+        }
+    }
+
+    /**
+     * {@link #run(Objective, int, int, PrintStream)} with the trials run by {@code executor} (this
+     * JVM's threads, or a cluster's executors): the trials and their files are the same whatever
+     * runs them. The executor is the caller's to close.
+     */
+    public void run(TrialExecutor executor, int nTrials, PrintStream progress) throws IOException, InterruptedException {
+        if (nTrials < 1) {
+            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
+        }
         Progress log = new Progress(progress, this, nTrials);
-        log.start(workers);
-        ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
-            Thread t = new Thread(r, "study-worker");
-            t.setDaemon(true);
-            return t;
-        });
-        CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
+        log.start(executor.describe());
         TreeSet<Integer> running = new TreeSet<>();
         try {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers; k = nextToStart(nTrials, running)) {
-                    double[] params = suggest(k);
-                    int number = k;
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots(); k = nextToStart(nTrials, running)) {
                     running.add(k);
-                    done.submit(() -> evaluate(objective, number, params));
+                    executor.start(k, suggest(k));
                 }
                 if (last != null) {
                     log.finished(last, running.size());
@@ -248,14 +247,13 @@ public final class Study {
                 if (running.isEmpty()) {
                     break;
                 }
-                last = result(done);
+                last = executor.next();
                 running.remove(last.number());
                 finished.put(last.number(), last);
                 writeJson(trialFile(last.number()), last.toJson(config));
                 writeBest();
             }
         } finally {
-            pool.shutdownNow();
             writeReport();
         }
         log.end();
@@ -300,7 +298,11 @@ public final class Study {
         return new SplittableRandom(s);
     }
 
-    private TrialRecord evaluate(Objective objective, int number, double[] x) {
+    /**
+     * Trial {@code number} of {@code objective} at {@code x}, timed: complete, or failed when the
+     * objective throws or gives a value that is not finite. What every executor of trials runs.
+     */
+    static TrialRecord trial(Objective objective, StudyConfig config, int number, double[] x) {
         long t0 = System.nanoTime();
         Evaluation e;
         try {
@@ -320,21 +322,6 @@ public final class Study {
             }
         }
         return TrialRecord.complete(number, x, e, seconds);
-    }
-
-    private static TrialRecord result(CompletionService<TrialRecord> done) throws InterruptedException {
-        try {
-            return done.take().get();
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException r) {
-                throw r;
-            }
-            if (cause instanceof Error err) {
-                throw err;
-            }
-            throw new IllegalStateException(cause);
-        }
     }
 
     private Path trialFile(int number) {
