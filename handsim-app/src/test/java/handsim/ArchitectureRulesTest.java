@@ -91,7 +91,7 @@ class ArchitectureRulesTest {
             Map.entry("handsim.cards.*", Set.of("config", "report")),
             // the study's trials also run on a cluster's executors (handsim.rollout's calls)
             Map.entry("handsim.cards.study", Set.of("config", "report", "rollout")),
-            Map.entry("handsim.spark", Set.of("config", "rollout")),
+            Map.entry("handsim.spark", Set.of("config", "report", "rollout")),
             Map.entry("handsim.app", Set.of("*")));
 
     /** Libraries that one package alone may import (prefixes of the import names). */

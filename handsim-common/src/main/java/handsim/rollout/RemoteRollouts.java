@@ -78,7 +78,7 @@ public final class RemoteRollouts<W> implements Rollouts<W> {
             throw new IllegalArgumentException("count must be >= 0, got " + count);
         }
         Shipment<W, R> shipment = shipment(task, runs++);
-        RecordedTask.Journal journal = task instanceof RecordedTask<W, R> r ? r.journal() : null;
+        RecordedTask.Journal journal = journal(task);
         String taskKey = PortableCall.key(shipment.portable());
         Object[] results = new Object[count];
         List<CompletableFuture<JsonNode>> pending = new ArrayList<>(Collections.nCopies(count, null));
@@ -108,6 +108,14 @@ public final class RemoteRollouts<W> implements Rollouts<W> {
         @SuppressWarnings("unchecked")
         List<R> out = (List<R>) Arrays.asList(results);
         return Collections.unmodifiableList(out);
+    }
+
+    /** The journal of a recorded task, also when it is a shippable task's local form; null for none. */
+    private static RecordedTask.Journal journal(RolloutTask<?, ?> task) {
+        if (task instanceof RecordedTask<?, ?> r) {
+            return r.journal();
+        }
+        return task instanceof ShippableTask<?, ?> s ? journal(s.local()) : null;
     }
 
     private static JsonNode await(CompletableFuture<JsonNode> f) {

@@ -1,6 +1,9 @@
 package handsim.spark;
 
+import handsim.report.Durations;
 import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
@@ -29,6 +32,8 @@ final class BatchProgress {
     private int failed;
     private long roundTripNanos;
     private long callNanos;
+    /** Each call's time from submission to result beyond its own time on the executor, ns. */
+    private final List<Long> overheads = new ArrayList<>();
 
     BatchProgress(PrintStream out, String what, int total, double everySeconds, TaskWatch.Losses losses) {
         this.out = out;
@@ -51,6 +56,7 @@ final class BatchProgress {
         done++;
         roundTripNanos += roundTrip;
         callNanos += call;
+        overheads.add(roundTrip - call);
     }
 
     synchronized void failed() {
@@ -59,9 +65,9 @@ final class BatchProgress {
 
     private synchronized void line() {
         double elapsed = seconds();
-        String eta = done == 0 || total <= 0 ? "" : ", ETA " + clock((total - done) * elapsed / done);
+        String eta = done == 0 || total <= 0 ? "" : ", ETA " + Durations.clock((total - done) * elapsed / done);
         out.printf(Locale.ROOT, "spark: %d%s %s done, %d running, %d failed, %d attempts run again; %s%s%n", done,
-                total > 0 ? "/" + total : "", what, running(), failed, losses.attempts.get(), clock(elapsed), eta);
+                total > 0 ? "/" + total : "", what, running(), failed, losses.attempts.get(), Durations.clock(elapsed), eta);
         out.flush();
     }
 
@@ -79,29 +85,18 @@ final class BatchProgress {
         double call = callNanos * 1e-9 / Math.max(1, done);
         double onExecutor = tasks == 0 ? 0 : losses.taskMillis.get() / 1000.0 / tasks - call;
         double roundTrip = roundTripNanos * 1e-9 / Math.max(1, done);
-        String perCall = done == 0 ? "" : String.format(Locale.ROOT, "; a call: %.3f s in the call, overhead %.3f s (%.2f %%): %.3f s "
-                + "on its executor around the call, %.3f s from submission to launch and from end to result (queueing included "
+        double median = overheads.isEmpty() ? 0 : overheads.stream().sorted().toList().get(overheads.size() / 2) * 1e-9;
+        String perCall = done == 0 ? "" : String.format(Locale.ROOT, "; a call: %.3f s in the call, overhead %.3f s (%.2f %%; median %.3f s): "
+                + "%.3f s on its executor around the call, %.3f s from submission to launch and from end to result (queueing included "
                 + "when more calls are in flight than cores)", call, roundTrip - call, 100 * (roundTrip - call) / Math.max(1e-9, call),
-                onExecutor, roundTrip - call - onExecutor);
+                median, onExecutor, roundTrip - call - onExecutor);
         out.printf(Locale.ROOT, "spark: %d %s done in %s on %s; %d failed; %d attempts lost with their executors and run again "
-                + "(%.1f s of executor time lost)%s%n", done, what, clock(seconds()), where, failed, losses.attempts.get(),
+                + "(%.1f s of executor time lost)%s%n", done, what, Durations.clock(seconds()), where, failed, losses.attempts.get(),
                 losses.millis.get() / 1000.0, perCall);
         out.flush();
     }
 
     private double seconds() {
         return (System.nanoTime() - t0) * 1e-9;
-    }
-
-    /** 42s, 3m05s, 1h02m. */
-    static String clock(double seconds) {
-        long s = Math.round(seconds);
-        if (s < 60) {
-            return s + "s";
-        }
-        if (s < 3600) {
-            return String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60);
-        }
-        return String.format(Locale.ROOT, "%dh%02dm", s / 3600, (s % 3600) / 60);
     }
 }

@@ -55,7 +55,7 @@ final class SparkCalls implements RemoteCalls {
     @Override
     public String describe() {
         return master.startsWith("local") ? master + " (" + slots() + " threads of this JVM)"
-                : master + " (" + executors() + " executors, " + slots() + " cores)";
+                : master + " (" + executors() + " executors registered, " + slots() + " cores)";
     }
 
     @Override

@@ -5,7 +5,7 @@
  * command is given {@code --master}; Spark itself is {@code provided}, on the classpath only
  * then (the launcher adds it) or under {@code spark-submit}.
  *
- * <p>Imports {@code handsim.config} and {@code handsim.rollout}, Spark and the JDK; nothing of the
+ * <p>Imports {@code handsim.config}, {@code handsim.report} and {@code handsim.rollout}, Spark and the JDK; nothing of the
  * hand's or the cards' packages: what runs is described by the calls themselves.
  */
 package handsim.spark;
