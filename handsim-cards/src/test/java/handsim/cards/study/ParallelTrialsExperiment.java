@@ -76,7 +76,7 @@ public final class ParallelTrialsExperiment {
         int seeds = Integer.parseInt(args[0]);
         int trials = Integer.parseInt(args[1]);
         int[] ns = Arrays.stream(new int[] {10, 25, 50, 89, 150, 297}).filter(n -> n <= trials).toArray();
-        double[] within = {0.5, 0.1, 0.02};
+        double[] within = {1.0, 0.5, 0.25};
         Path tmp = Files.createTempDirectory("tpe-parallel");
         StringBuilder head = new StringBuilder("| P |");
         for (int n : ns) {
