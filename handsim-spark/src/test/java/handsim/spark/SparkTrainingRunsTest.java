@@ -41,7 +41,7 @@ class SparkTrainingRunsTest {
         return Json.pretty(o);
     }
 
-    private static String[] with(String[] base, String... more) {
+    static String[] with(String[] base, String... more) {
         return Stream.concat(Stream.of(base), Stream.of(more)).toArray(String[]::new);
     }
 

@@ -26,17 +26,19 @@ import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code cards optimize} on a standalone cluster of a master and two one-core workers started by
- * scripts/spark-cluster: a short Card Snapping study (reduced fingertips, 0.2 s trials, 6 trials,
- * two at once) gives the trial files of the same study run on this JVM's threads, byte for byte
- * but for the wall times the trials measured; so does the study when its driver is killed and the
- * same command resumes it, and when a worker is killed mid-study (the cluster runs its trial again
- * and says what that lost). The cluster is stopped after the tests, also when they fail.
+ * Commands on a standalone cluster of a master and two one-core workers started by
+ * scripts/spark-cluster. A short box evaluation (6 tests) writes the JSON, CSV and success map of
+ * the same evaluation on this JVM's threads, byte for byte but for what describes the run. A
+ * short Card Snapping study (reduced fingertips, 0.2 s trials, 6 trials, two at once) gives the
+ * trial files of the same study on threads, byte for byte but for the wall times the trials
+ * measured; so does the study when its driver is killed and the same command resumes it, and
+ * when a worker is killed mid-study (the cluster runs its trial again and says what that lost).
+ * The cluster is stopped after the tests, also when they fail.
  */
 @Tag("slow")
 @Tag("cluster")
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
-class ClusterStudyTest {
+class ClusterCommandsTest {
 
     private static final Path CONFIG = Path.of("handsim-spark/src/test/resources/cluster/short-snap-study.json");
     /** What the comparison leaves out: study.json records each run's command line (--master among it). */
@@ -68,6 +70,18 @@ class ClusterStudyTest {
         if (cluster != null) {
             cluster.close();
         }
+    }
+
+    @Test
+    @Order(0)
+    void aBoxEvaluationOnTheClusterIsTheThreadPools() throws Exception {
+        Path dir = tmp.resolve("box");
+        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "6", "--seed", "77"};
+        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
+                "--csv", dir.resolve("threads.csv").toString())));
+        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
+                "--csv", dir.resolve("cluster.csv").toString())));
+        SparkEvaluationTest.assertSameEvaluation(dir, "threads", "cluster");
     }
 
     @Test
