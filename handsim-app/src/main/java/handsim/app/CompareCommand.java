@@ -2,6 +2,7 @@ package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.taskdef.TaskDefinitions;
 import handsim.evaluation.PairedLoops;
 import handsim.report.Outputs;
 import java.nio.file.Files;
@@ -103,7 +104,7 @@ final class CompareCommand implements Callable<Integer> {
         if (!j.has("task") || !j.has("episodes") || !j.has("object")) {
             throw new IllegalArgumentException(file + " is not the JSON of an evaluation (evaluate --json)");
         }
-        if (!j.has("max_loops")) { // the summary of loops in a row, which flip evaluations write
+        if (!j.has("max_loops") || !Wiring.shipped().task(TaskDefinitions.checkName(j.string("task"))).countsLoopsInARow()) {
             throw new IllegalArgumentException(file + " is an evaluation of the " + j.string("task") + " task: compare reads flip "
                     + "evaluations (loops in a row)");
         }

@@ -48,13 +48,14 @@ final class DaggerCommand implements Callable<Integer> {
         }
         Json file = run.resume == null ? run.configFile() : null;
         DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
-        RunConfigs configs = TrainCommand.configs(c.run());
+        RunConfigs configs = run.resume == null ? TrainCommand.configs(c.run()) : TrainCommand.recorded(run.resume, c.run());
         ThrowEnvFactory envs = TrainCommand.environments(c.run(), configs);
         // a cluster is reached before the run folder is made: a master that cannot be used leaves nothing behind
         try (Rollouts<Simulator> rollouts = cluster.remote() ? ClusterWiring.rollouts(cluster, configs, "handsim dagger " + c.run().name()
                 + " seed " + c.learner().seed()) : Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
                     : started(file, c, envs, rollouts);
+            TrainCommand.recordSpec(dagger.dir(), configs);
             if (cluster.remote()) {
                 dagger.onCluster(PortableDagger.shipper(dagger.dir(), configs));
             }

@@ -122,7 +122,8 @@ final class EvaluateCommand implements Callable<Integer> {
         TaskDefinition definition = run.definition();
         definition.check(request); // options the task does not take, a bad goals file: refused before anything is written
         EvaluationSetup setup = run.setup(exported, System.out);
-        configs.model(); // every document read before the journal records them
+        configs.model(); // the engine's documents too: every document read before the journal records them
+        configs.sim();
         ObjectNode record = run.toJson();
         // a cluster is reached before the journal is made: a master that cannot be used leaves nothing behind
         Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.evaluation(cluster, run) : null;
@@ -184,6 +185,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", run.object());
+        out.set("controller_parts", run.controllerParts());
         if (!run.taskSet().isEmpty()) {
             out.set("task_set", run.toTaskSetJson());
         }

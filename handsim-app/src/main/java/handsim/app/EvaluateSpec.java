@@ -150,6 +150,39 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
         return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, t, spec, hand);
     }
 
+    /**
+     * What the controller of this run is made of, each part with where it comes from: the throws
+     * (the task's nominal throw, hand-designed, or a policy and how it was learned, read from its
+     * provenance), the opening and rest policies, the parts the task adds by hand, and the
+     * twin-world planner when it chooses the throws.
+     */
+    ObjectNode controllerParts() {
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
+        o.put("throws", policies.containsKey("policy") ? learned(policies.get("policy")) : "hand-designed: the task's nominal throw");
+        if (policies.containsKey("opening_policy")) {
+            o.put("opening_throws", learned(policies.get("opening_policy")));
+        }
+        if (policies.containsKey("rest_policy")) {
+            o.put("rest_throws", learned(policies.get("rest_policy")));
+        }
+        definition().handDesignedParts(object).forEach(o.putArray("hand_designed")::add);
+        if (plan) {
+            o.put("planner", "the twin-world planner chooses every throw, knowing the future exactly: planner-assisted");
+        }
+        return o;
+    }
+
+    /** How the policy of {@code file} was learned, from its provenance: the command or the run folder that made it. */
+    private static String learned(Path file) {
+        var provenance = ThrowPolicyFile.load(file).provenance();
+        String made = provenance.path("command").asText("") + " " + provenance.path("run").asText("");
+        String how = made.contains("dagger") ? "imitation of the twin-world planner (DAgger): distilled from the planner"
+                : made.contains("warmstart") ? "regression on CMA-ES throws (the warm start)"
+                : made.contains("handsim train") || provenance.has("decisions") ? "DDPG, the paper's method"
+                : "a method its file does not record";
+        return "learned by " + how + " (" + file.getFileName() + ")";
+    }
+
     /** The fields of the task's file changed, with their values as JSON. */
     ObjectNode toTaskSetJson() {
         ObjectNode set = JsonNodeFactory.instance.objectNode();

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.ConfigSet;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
+import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
@@ -83,10 +84,11 @@ final class TrainCommand implements Callable<Integer> {
                     + "with --set training.episodes=N");
         }
         TrainConfig c = run.resume == null ? TrainConfig.parse(run.configFile()) : TrainRun.savedConfig(run.resume);
-        RunConfigs configs = configs(c.run());
+        RunConfigs configs = run.resume == null ? configs(c.run()) : recorded(run.resume, c.run());
         ThrowEnvFactory envs = environments(c.run(), configs);
         try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             TrainRun training = run.resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
+            recordSpec(training.dir(), configs);
             tellLauncher(training.dir());
             training.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
@@ -99,6 +101,24 @@ final class TrainCommand implements Callable<Integer> {
         if (file != null) {
             Files.writeString(Path.of(file), dir.toAbsolutePath().toString());
         }
+    }
+
+    /** Where a run folder records the configuration documents its run read ({@link ConfigSet#toJson}). */
+    static final String SPEC = "spec.json";
+
+    /**
+     * The configs of the run in {@code dir}: the documents its folder records ({@link #SPEC}), so
+     * that a resumed run plays in the world it began in; the project's files for a folder without
+     * the record.
+     */
+    static RunConfigs recorded(Path dir, TrainConfig.Run run) {
+        Path spec = dir.resolve(SPEC);
+        return Files.isRegularFile(spec) ? new RunConfigs(ConfigSet.replaying(Json.load(spec))) : configs(run);
+    }
+
+    /** Records in {@code dir} every configuration document the run has read. */
+    static void recordSpec(Path dir, RunConfigs configs) throws IOException {
+        Outputs.writeJson(dir.resolve(SPEC), configs.files().toJson());
     }
 
     /** The project's configs with the fields of the task's file that the run changes ({@link TrainConfig.Run#taskSet}). */

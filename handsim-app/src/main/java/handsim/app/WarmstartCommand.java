@@ -58,6 +58,7 @@ final class WarmstartCommand implements Callable<Integer> {
         Path dir = ClusterWiring.closingOnFailure(remote, () -> RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(),
                 c.train().learner().seed()));
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
+        TrainCommand.recordSpec(dir, configs);
         Outputs.writeJson(dir.resolve("run.json"),
                 RunOptions.provenance(RunOptions.commandLine("warmstart", config, overrides), c.train().learner().seed()));
         System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "

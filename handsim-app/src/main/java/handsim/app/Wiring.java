@@ -1,6 +1,7 @@
 package handsim.app;
 
 import handsim.config.ConfigSet;
+import handsim.config.Home;
 import handsim.control.ControllerConfig;
 import handsim.control.PdController;
 import handsim.model.HandModel;
@@ -26,14 +27,18 @@ import java.nio.file.Path;
 final class Wiring {
 
     private static RunConfigs shipped;
+    /** The project root {@link #shipped} was read from: another root (-Dhandsim.home changed) is read afresh. */
+    private static Path shippedHome;
 
     private Wiring() {
     }
 
     /** The project's model and configs as their files say, parsed once. */
     static synchronized RunConfigs shipped() {
-        if (shipped == null) {
+        Path home = Home.root();
+        if (shipped == null || !home.equals(shippedHome)) {
             shipped = new RunConfigs(ConfigSet.fromFiles());
+            shippedHome = home;
         }
         return shipped;
     }

@@ -100,7 +100,7 @@ class CommandsTest {
         String config = handsim.config.Home.resolve("configs/train/flip-warmstart.json").toString();
         // a misspelt key is named, and a refused warm start writes nothing
         assertRefused("bogus", "warmstart", "--config", config, "--set", "run.bogus=1", "--runs", dir.toString());
-        assertRefused("--set takes KEY=VALUE, got \"run.armRest\"", "warmstart", "--config", config, "--set", "run.armRest", "--runs",
+        assertRefused("--set takes KEY=VALUE, got \"run.taskSet\"", "warmstart", "--config", config, "--set", "run.taskSet", "--runs",
                 dir.toString());
         // one initial condition can never give the 2 examples a fit needs: refused before the search
         assertRefused("initialConditions", "warmstart", "--config", config, "--set", "warmstart.initialConditions=1", "--runs",
@@ -108,10 +108,10 @@ class CommandsTest {
         try (var listed = Files.list(dir)) {
             assertEquals(0, listed.count(), "nothing written by a refused warm start");
         }
-        // a tiny warm start of the can drawn to its arm rest: two initial conditions (the fewest
+        // a tiny warm start of the can drawn to its arm rest (no taskSet: the task as its file says): two initial conditions (the fewest
         // the actor can be fitted to), two throws tried for each, every one kept; the run's config
         // and command carry the overrides
-        String[] overrides = {"--set", "run.armRest=true", "--set", "run.workers=1", "--set", "warmstart.initialConditions=2",
+        String[] overrides = {"--set", "run.taskSet={}", "--set", "run.workers=1", "--set", "warmstart.initialConditions=2",
             "--set", "warmstart.keepReward=-100", "--set", "cmaes.maxEvaluations=2", "--set", "pretrain.epochs=1"};
         String[] args = java.util.stream.Stream.concat(java.util.stream.Stream.of("warmstart", "--config", config, "--runs", dir.toString()),
                 Arrays.stream(overrides)).toArray(String[]::new);
@@ -121,12 +121,12 @@ class CommandsTest {
             run = listed.filter(Files::isDirectory).findFirst().orElseThrow();
         }
         JsonNode saved = Json.load(run.resolve("config.json")).node();
-        assertTrue(saved.at("/run/armRest").asBoolean(), saved.toString());
+        assertEquals(0, saved.at("/run/taskSet").size(), saved.toString());
         assertEquals(2, saved.at("/cmaes/maxEvaluations").asInt(), saved.toString());
         JsonNode record = Json.load(run.resolve("run.json")).node();
         assertEquals(1, record.get("seed").asInt(), "the config's seed, recorded as train and dagger record theirs");
         assertTrue(record.get("command").asText()
-                .endsWith("--set run.armRest=true --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
+                .endsWith("--set 'run.taskSet={}' --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
                         + "--set cmaes.maxEvaluations=2 --set pretrain.epochs=1"));
     }
 
@@ -669,6 +669,13 @@ class CommandsTest {
         Path run = Path.of(Files.readString(told));
         assertTrue(run.isAbsolute() && run.startsWith(dir.resolve("runs").toAbsolutePath()), run.toString());
         assertTrue(Files.isRegularFile(run.resolve("policy.json")), "the folder named is the run's: " + run);
+        // the folder records every configuration document the run read, the resume plays in them
+        JsonNode spec = Json.load(run.resolve(TrainCommand.SPEC)).node();
+        for (String read : List.of("models/arm_hand.json", "configs/sim.json", "configs/controller.json", "configs/tasks/height.json",
+                "configs/objects/sphere.json")) {
+            assertTrue(spec.has(read), read + " is recorded: " + spec.fieldNames());
+        }
+        assertEquals(Json.load(handsim.config.Home.resolve("configs/sim.json")).node(), spec.get("configs/sim.json"), "as the file reads");
     }
 
     @Test

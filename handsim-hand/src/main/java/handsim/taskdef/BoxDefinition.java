@@ -18,18 +18,13 @@ import java.util.function.Supplier;
  * seeded or listed ({@code --goals} boxes), a success after the config's loops in a row;
  * evaluated by the success rate and map (Fig. 8); the box drawn, and moved by a watcher for the
  * next throw-in.
+ *
+ * @param config configs/tasks/box.json as the run resolved it, parsed
+ * @param context what its tasks are measured from, asked for when the first task is made
  */
-public final class BoxDefinition implements TaskDefinition {
+public record BoxDefinition(BoxTask.Config config, Supplier<TaskContext> context) implements TaskDefinition {
 
     public static final String NAME = "box";
-
-    private final BoxTask.Config config;
-    private final Supplier<TaskContext> context;
-
-    BoxDefinition(BoxTask.Config config, Supplier<TaskContext> context) {
-        this.config = config;
-        this.context = context;
-    }
 
     @Override
     public String name() {

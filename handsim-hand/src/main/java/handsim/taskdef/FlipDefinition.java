@@ -9,24 +9,21 @@ import handsim.task.FlipTask;
 import handsim.task.Goal;
 import handsim.task.HeightGoals;
 import handsim.task.TaskContext;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.function.Supplier;
 
 /**
  * Flip the object and catch it, over and over (paper sec. 4.4, {@link FlipTask}), with the
  * object's own catch, release and arm rest from the config; evaluated by the loops in a row until
  * a throw fails, with or without the twin-world planner ({@code --plan}); nothing to draw or move.
+ *
+ * @param config configs/tasks/flip.json as the run resolved it, parsed
+ * @param context what its tasks are measured from, asked for when the first task is made
  */
-public final class FlipDefinition implements TaskDefinition {
+public record FlipDefinition(FlipTask.Config config, Supplier<TaskContext> context) implements TaskDefinition {
 
     public static final String NAME = "flip";
-
-    private final FlipTask.Config config;
-    private final Supplier<TaskContext> context;
-
-    FlipDefinition(FlipTask.Config config, Supplier<TaskContext> context) {
-        this.config = config;
-        this.context = context;
-    }
 
     @Override
     public String name() {
@@ -63,6 +60,22 @@ public final class FlipDefinition implements TaskDefinition {
         check(r);
         return r.copies() != null ? new SensitivityEvaluation(r, setup, () -> newTask(r.object()))
                 : new FlipEvaluation(r, setup, () -> newTask(r.object()));
+    }
+
+    @Override
+    public boolean countsLoopsInARow() {
+        return true;
+    }
+
+    @Override
+    public List<String> handDesignedParts(String object) {
+        FlipTask.ObjectFlip flip = config.objects().get(object);
+        List<String> parts = new ArrayList<>();
+        String field = TaskDefinitions.file(NAME) + " objects." + object + ".";
+        flip.catchAfterThrow().ifPresent(c -> parts.add("the catch after each throw (" + field + "catch)"));
+        flip.release().ifPresent(r -> parts.add("the closed-loop release (" + field + "release)"));
+        flip.armRest().ifPresent(r -> parts.add("the arm rest (" + field + "armRest)"));
+        return parts;
     }
 
     @Override

@@ -17,22 +17,13 @@ import java.util.function.Supplier;
  * Throw to a desired height (paper sec. 4.2, {@link HeightTask}): goals drawn from the config's
  * range, or one height ({@code --throw-height}), or a list ({@code --goals} heights); evaluated by
  * the height errors (Fig. 5); the goal drawn as a plane, raised and lowered by a watcher.
+ *
+ * @param config configs/tasks/height.json as the run resolved it, parsed
+ * @param context what its tasks are measured from, asked for when the first task is made
  */
-public final class HeightDefinition implements TaskDefinition {
+public record HeightDefinition(HeightTask.Config config, Supplier<TaskContext> context) implements TaskDefinition {
 
     public static final String NAME = "height";
-
-    private final HeightTask.Config config;
-    private final Supplier<TaskContext> context;
-
-    HeightDefinition(HeightTask.Config config, Supplier<TaskContext> context) {
-        this.config = config;
-        this.context = context;
-    }
-
-    public HeightTask.Config config() {
-        return config;
-    }
 
     @Override
     public String name() {

@@ -5,6 +5,7 @@ import handsim.evaluation.EvaluationSetup;
 import handsim.evaluation.TaskEvaluation;
 import handsim.task.HeightGoals;
 import handsim.task.ThrowTask;
+import java.util.List;
 
 /**
  * One task of the paper (sec. 4) as handsim runs it, from its file {@code configs/tasks/NAME.json}
@@ -32,6 +33,20 @@ public interface TaskDefinition {
 
     /** The evaluation {@code request} asks for ({@link #check checked} first): a sensitivity run with copies, else the task's own. */
     TaskEvaluation evaluation(EvaluationRequest request, EvaluationSetup setup);
+
+    /** Whether its evaluation counts loops in a row until a throw fails (episodes two runs can compare seed by seed). */
+    default boolean countsLoopsInARow() {
+        return false;
+    }
+
+    /**
+     * The parts of the controller this task adds by hand for {@code object}, each named with the
+     * field of the task's file that sets it (the flip task's catch, release and arm rest); none
+     * for a task that runs the controller as configs/controller.json makes it.
+     */
+    default List<String> handDesignedParts(String object) {
+        return List.of();
+    }
 
     /**
      * A new task for {@code object} with the hooks a scene draws and moves its goal by: the

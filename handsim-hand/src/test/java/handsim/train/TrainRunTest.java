@@ -195,8 +195,8 @@ class TrainRunTest {
     }
 
     /** The flip task a run trains on: the task's file with the run's taskSet applied. */
-    private static FlipTask flipTaskOf(TrainConfig c) {
-        return new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file("flip"), c.run().taskSet()))).flip().newTask("can");
+    private static FlipTask flipTaskOf(TrainConfig.Run run) {
+        return new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file("flip"), run.taskSet()))).flip().newTask("can");
     }
 
     @Test
@@ -207,17 +207,17 @@ class TrainRunTest {
         TrainConfig flip = TrainConfig.load(file);
         assertEquals(flip, TrainConfig.parse(Json.of("saved", flip.toJson())), "the run folder's config gives it back");
         ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        FlipTask trained = flipTaskOf(flip);
+        FlipTask trained = flipTaskOf(flip.run());
         assertEquals(new CatchStyle(0, 0.7), trained.controller(base).catchAfterThrow().orElseThrow(), "the task catches as the run says");
         assertTrue(trained.controller(base).armRest().isEmpty(), "and leaves the arm to the IK");
         assertTrue(TestSupport.configs().flip().newTask("can").controller(base).armRest().isPresent(), "the task's can has an arm rest");
         for (String name : new String[] {"flip", "flip-opening", "flip-warmstart", "flip-dagger"}) {
-            TrainConfig c = TrainConfig.parse(Json.load(Home.resolve("configs/train/" + name + ".json")));
-            assertTrue(flipTaskOf(c).controller(base).armRest().isEmpty(), name + ": the shipped can policies were trained without it");
+            TrainConfig.Run run = TrainConfig.Run.parse(Json.load(Home.resolve("configs/train/" + name + ".json")).get("run"));
+            assertTrue(flipTaskOf(run).controller(base).armRest().isEmpty(), name + ": the shipped can policies were trained without it");
         }
         TrainConfig resting = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), Json.load(file).node(),
                 Map.of("run.taskSet", "{}"))));
-        assertTrue(flipTaskOf(resting).controller(base).armRest().isPresent(), "an empty taskSet trains with the task's own arm rest");
+        assertTrue(flipTaskOf(resting.run()).controller(base).armRest().isPresent(), "an empty taskSet trains with the task's own arm rest");
         assertEquals(resting, TrainConfig.parse(Json.of("saved", resting.toJson())), "and its folder's config keeps it");
     }
 
