@@ -195,6 +195,7 @@ public final class DaggerRun {
                 Dagger.Round round = dagger.round(r, actor, network, (a, requests) -> rollouts.run(requests.size(),
                         roundTask(roundNumber, a, learner, requests, kept, set, workers, twinSims), progress::onEpisode), earlier);
                 round.episodes().forEach(e -> earlier.addAll(e.visits()));
+                set.sortEpisodes(); // the round's rows in episode order, however its episodes finished
                 double seconds = (System.nanoTime() - t0) * 1e-9;
                 savePolicy(round.policy(), r);
                 appendRound(round.stats(), seconds);
