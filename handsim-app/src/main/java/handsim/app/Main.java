@@ -4,6 +4,7 @@ import handsim.cards.contact.BudgetExceeded;
 import handsim.config.ConfigException;
 import handsim.report.Locks;
 import handsim.report.Stop;
+import handsim.rollout.RemoteFailure;
 import handsim.sim.SimulationDiverged;
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -54,7 +55,7 @@ public final class Main implements Runnable {
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             String failure = ex instanceof ConfigException || ex instanceof IllegalArgumentException ? ex.getMessage()
                     : ex instanceof SimulationDiverged ? "the simulation diverged: " + ex.getMessage()
-                    : ex instanceof RunFailed || ex instanceof Stop.Stopped ? ex.getMessage()
+                    : ex instanceof RunFailed || ex instanceof Stop.Stopped || ex instanceof RemoteFailure ? ex.getMessage()
                     : ex instanceof BudgetExceeded ? "the trial went past its budget: " + ex.getMessage()
                     : ex instanceof IOException io ? fileProblem(io)
                     : ex instanceof UncheckedIOException io ? fileProblem(io.getCause()) : null;

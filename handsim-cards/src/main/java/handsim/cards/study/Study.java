@@ -27,13 +27,6 @@ import java.util.Optional;
 import java.util.SplittableRandom;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import java.util.concurrent.CompletionService;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorCompletionService;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -57,7 +50,8 @@ import java.util.stream.Stream;
  *   <li>it is suggested once every trial numbered 0 … k - P has finished, from those of them
  *       that completed, never from a later one that happens to have finished.</li>
  * </ul>
- * Trials start in number order on up to {@code workers} threads, at most P at a time. So the
+ * Trials start in number order on up to {@code workers} threads (or a cluster's executors:
+ * {@link TrialExecutor}), at most P at a time. So the
  * study's trials are the same for any number of workers, and a study resumed after a kill
  * continues exactly as if it had never stopped: finished trials are read back bit for bit, and
  * a trial that was running is run again with the same parameters. P = 1 is Optuna's sequential
@@ -71,8 +65,8 @@ public final class Study {
     public static final String BEST_FILE = "best.json";
     private static final Pattern TRIAL_FILE = Pattern.compile("trial-(\\d+)\\.json");
     private static final String FORMAT = "handsim cards study 1";
-    /** How often the study, waiting for a trial, looks for a stop request (ms). */
-    private static final long STOP_POLL_MILLIS = 100;
+    /** How often a study waiting for a trial looks for a stop request (ms); every {@link TrialExecutor} waits so. */
+    static final long STOP_POLL_MILLIS = 100;
 
     private final Path dir;
     private final StudyConfig config;
@@ -233,31 +227,34 @@ public final class Study {
      * resume), the report is written and InterruptedException is thrown.
      */
     public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
-        if (nTrials < 1) {
-            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
-        }
         if (workers < 1) {
             throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
         }
+        try (TrialExecutor threads = new ThreadTrials(objective, config, workers)) {
+            run(threads, nTrials, progress);
+        }
+    }
+
+    /**
+     * {@link #run(Objective, int, int, PrintStream)} with the trials run by {@code executor} (this
+     * JVM's threads, or a cluster's executors): the trials and their files are the same whatever
+     * runs them. The executor is the caller's to close.
+     */
+    public void run(TrialExecutor executor, int nTrials, PrintStream progress) throws IOException, InterruptedException {
+        if (nTrials < 1) {
+            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
+        }
         recordRun();
         Progress log = new Progress(progress, this, nTrials);
-        log.start(workers);
-        ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
-            Thread t = new Thread(r, "study-worker");
-            t.setDaemon(true);
-            return t;
-        });
-        CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
+        log.start(executor.describe());
         TreeSet<Integer> running = new TreeSet<>();
         try (Stop.Watch watch = Stop.watch()) {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers && !Stop.requested();
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots() && !Stop.requested();
                         k = nextToStart(nTrials, running)) {
-                    double[] params = suggest(k);
-                    int number = k;
                     running.add(k);
-                    done.submit(() -> evaluate(objective, number, params));
+                    executor.start(k, suggest(k));
                 }
                 if (last != null) {
                     log.finished(last, running.size());
@@ -265,7 +262,7 @@ public final class Study {
                 if (running.isEmpty()) {
                     break;
                 }
-                last = result(done);
+                last = executor.next();
                 if (last == null) {
                     break; // a stop was requested: the trials under way are abandoned (they run again on resume)
                 }
@@ -275,7 +272,6 @@ public final class Study {
                 writeBest();
             }
         } finally {
-            pool.shutdownNow();
             writeReport();
         }
         Stop.check(finished.size() + " trials finished, kept in " + dir + " (the same command goes on from them)");
@@ -321,7 +317,11 @@ public final class Study {
         return new SplittableRandom(s);
     }
 
-    private TrialRecord evaluate(Objective objective, int number, double[] x) {
+    /**
+     * Trial {@code number} of {@code objective} at {@code x}, timed: complete, or failed when the
+     * objective throws or gives a value that is not finite. What every executor of trials runs.
+     */
+    static TrialRecord trial(Objective objective, StudyConfig config, int number, double[] x) {
         long t0 = System.nanoTime();
         Evaluation e;
         try {
@@ -348,28 +348,6 @@ public final class Study {
             }
         }
         return TrialRecord.complete(number, x, e, seconds);
-    }
-
-    /** The next trial to finish, or null when a stop is requested first. */
-    private static TrialRecord result(CompletionService<TrialRecord> done) throws InterruptedException {
-        Future<TrialRecord> next;
-        while ((next = done.poll(STOP_POLL_MILLIS, TimeUnit.MILLISECONDS)) == null) {
-            if (Stop.requested()) {
-                return null;
-            }
-        }
-        try {
-            return next.get();
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException r) {
-                throw r;
-            }
-            if (cause instanceof Error err) {
-                throw err;
-            }
-            throw new IllegalStateException(cause);
-        }
     }
 
     private Path trialFile(int number) {
