@@ -409,6 +409,8 @@ public final class Study {
             }
             return null;
         }
-        return a.equals(b) ? null : path + ": " + a + " in the study, " + b + " given";
+        // a number is its value: 4000000 read back from study.json (an int) is the long it was written from
+        boolean same = a.isNumber() && b.isNumber() ? a.decimalValue().compareTo(b.decimalValue()) == 0 : a.equals(b);
+        return same ? null : path + ": " + a + " in the study, " + b + " given";
     }
 }
