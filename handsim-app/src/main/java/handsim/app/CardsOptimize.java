@@ -1,14 +1,17 @@
 package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.cards.sleight.SnapObjective;
 import handsim.cards.sleight.SnapParams;
 import handsim.cards.sleight.SnapStudy;
 import handsim.cards.sleight.SnapTrial;
+import handsim.cards.study.RemoteTrials;
 import handsim.cards.study.Study;
 import handsim.cards.study.StudyConfig;
 import handsim.cards.study.TrialRecord;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.rollout.RemoteCalls;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -44,7 +47,7 @@ final class CardsOptimize implements Callable<Integer> {
     long seed;
 
     @Option(names = "--workers", paramLabel = "N", description = "trials run on N threads (default: the config's parallelTrials); "
-            + "the results are the same for any N")
+            + "the results are the same for any N, and with --master")
     Integer workers;
 
     @Option(names = "--out", paramLabel = "DIR", description = "the study folder (default: runs/cards-optimize__SLEIGHT-MESH__SEED); "
@@ -57,6 +60,9 @@ final class CardsOptimize implements Callable<Integer> {
 
     @Mixin
     CardsSceneOptions scene;
+
+    @Mixin
+    ClusterOptions cluster;
 
     @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (snap, materials, "
             + "solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part of "
@@ -78,6 +84,10 @@ final class CardsOptimize implements Callable<Integer> {
             throw new IllegalArgumentException("--workers must be >= 1, got " + workers);
         }
         scene.checkFrameSize();
+        cluster.validate();
+        if (workers != null && cluster.remote()) {
+            throw new IllegalArgumentException("--workers goes without --master: the cluster's cores run the trials");
+        }
         Path configFile = config != null ? config : Home.resolve("configs/cards/snap-study.json");
         if (!Files.isRegularFile(configFile)) {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
@@ -86,20 +96,30 @@ final class CardsOptimize implements Callable<Integer> {
         SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, RunOptions.keyValues(overrides));
         SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
-        if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("--out " + dir + " is a file, not a folder");
-        }
-        int threads = workers != null ? workers : studyConfig.parallelTrials();
+        new OutputPaths().heldFolder("--out", dir, Study.STUDY_FILE, Study.BEST_FILE, "history.png", Study.TRIALS_DIR + "/",
+                BEST_DIR + "/").check();
 
         ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs());
-        Study study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
-        System.out.printf(Locale.ROOT, "handsim cards optimize: Card Snapping, %s fingertips (%d nodes, %d free), %s cards, alpha_target %s deg%n",
-                trial.scene().config().meshName(), trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(),
-                trial.inputs().get("card").asText(), trial.scene().config().alphaTargetDegrees());
-        long h0 = System.nanoTime();
-        trial.heldState();
-        System.out.printf(Locale.ROOT, "hold (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
-        study.run(SnapStudy.objective(trial), trials, threads, System.out);
+        // a cluster is reached before the study folder is made: a master that cannot be used leaves nothing behind
+        Study study;
+        try (RemoteCalls calls = cluster.remote() ? cluster.connect("handsim cards optimize " + dir.getFileName()) : null) {
+            study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
+            System.out.printf(Locale.ROOT, "handsim cards optimize: Card Snapping, %s fingertips (%d nodes, %d free), %s cards, alpha_target %s "
+                    + "deg%n", trial.scene().config().meshName(), trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(),
+                    trial.inputs().get("card").asText(), trial.scene().config().alphaTargetDegrees());
+            if (calls != null) {
+                // each executor builds the trial from its documents and simulates the hold once for the trials it runs
+                int toRun = trials - (int) study.trials().stream().filter(t -> t.number() < trials).count();
+                try (RemoteTrials remote = new RemoteTrials(calls, SnapObjective.of(trial), studyConfig, seed, toRun)) {
+                    study.run(remote, trials, System.out);
+                }
+            } else {
+                long h0 = System.nanoTime();
+                trial.heldState();
+                System.out.printf(Locale.ROOT, "hold (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
+                study.run(SnapStudy.objective(trial), trials, workers != null ? workers : studyConfig.parallelTrials(), System.out);
+            }
+        }
 
         TrialRecord best = study.best().orElse(null);
         if (best == null) {

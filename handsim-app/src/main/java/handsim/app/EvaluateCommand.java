@@ -102,6 +102,9 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "with --episodes 1 (box: --tests 1): also write the episode's animation (FILE.glb, FILE.gltf or FILE.bvh; see export)")
     Path export;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Spec
     CommandSpec spec;
 
@@ -118,16 +121,16 @@ final class EvaluateCommand implements Callable<Integer> {
         EvaluationRequest request = run.request(csv, plot, exported != null);
         TaskDefinition definition = run.definition();
         definition.check(request); // options the task does not take, a bad goals file: refused before anything is written
-        EvaluationSetup setup = new EvaluationSetup(configs.controller(), configs.object(run.object()), configs.limits(),
-                configs.launches(), configs.evaluation(), run.throwPolicies(), run.plan() ? configs.planner(run.object()) : null,
-                Wiring::twinSimulator, exported, null, System.out);
+        EvaluationSetup setup = run.setup(exported, System.out);
         configs.model(); // the engine's documents too: every document read before the journal records them
         configs.sim();
         ObjectNode record = run.toJson();
-        EpisodeJournal journal = json == null ? null : openJournal(record, commit);
+        // a cluster is reached before the journal is made: a master that cannot be used leaves nothing behind
+        Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.evaluation(cluster, run) : null;
+        EpisodeJournal journal = json == null ? null : ClusterWiring.closingOnFailure(remote, () -> openJournal(record, commit));
         long t0 = System.nanoTime();
         ObjectNode out = summaryHead(run);
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), workers)) {
+        try (Rollouts<Simulator> rollouts = remote != null ? remote : Wiring.rollouts(configs.model(), configs.sim(), workers)) {
             definition.evaluation(request, withJournal(setup, journal)).run(rollouts, out);
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
@@ -187,7 +190,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.set("task_set", run.toTaskSetJson());
         }
         out.put("seed", run.seed());
-        out.put("workers", workers);
+        out.put("workers", workers); // null on a cluster
         return out;
     }
 
@@ -199,12 +202,18 @@ final class EvaluateCommand implements Callable<Integer> {
     private EpisodeJournal openJournal(ObjectNode record, String commit) {
         ObjectNode signature = record.deepCopy();
         signature.remove(List.of("episodes", "tests"));
-        EpisodeJournal journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature, commit);
+        EpisodeJournal journal = EpisodeJournal.open(journalFile(), signature, commit);
+        StopRecords.evaluation(json, journal, spec.commandLine().getParseResult().originalArgs(), commit);
         if (journal.finished() > 0) {
             System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
                     journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
         }
         return journal;
+    }
+
+    /** Where --json's finished episodes are kept while the run goes: FILE.episodes.jsonl. */
+    private Path journalFile() {
+        return json.resolveSibling(json.getFileName() + ".episodes.jsonl");
     }
 
     private static EvaluationSetup withJournal(EvaluationSetup s, EpisodeJournal journal) {
@@ -226,17 +235,27 @@ final class EvaluateCommand implements Callable<Integer> {
         if (!(run.nudge() > 0 && run.nudge() <= 1)) {
             throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + run.nudge());
         }
-        if (workers == null) {
+        cluster.validate();
+        if (cluster.remote() && (workers != null || export != null)) {
+            throw new IllegalArgumentException((workers != null ? "--workers" : "--export") + " goes without --master: "
+                    + (workers != null ? "the cluster's cores run the episodes" : "an animation is of one episode, run here"));
+        }
+        if (workers == null && !cluster.remote()) {
             workers = LocalRollouts.localCores();
         }
-        if (workers < 1 || workers > 256) {
+        if (workers != null && (workers < 1 || workers > 256)) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
         if (plot == null && json != null) {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
-        new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
+        if (specFile != null) { // the policies of a recorded run are named by no option
+            run.policies().forEach((role, file) -> OutputPaths.input(file, "the " + role.replace('_', ' ') + " recorded in --spec "
+                    + specFile));
+        }
+        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : journalFile()).file("--csv", csv)
+                .file("--plot", plot).check();
         return RunExport.to(export);
     }
 

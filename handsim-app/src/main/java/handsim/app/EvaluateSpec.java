@@ -7,7 +7,9 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.config.ReadLog;
 import handsim.control.ThrowPolicy;
+import handsim.evaluation.CatchEvaluation;
 import handsim.evaluation.EvaluationRequest;
+import handsim.evaluation.EvaluationSetup;
 import handsim.spec.RunConfigs;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
@@ -15,6 +17,7 @@ import handsim.taskdef.TaskDefinition;
 import handsim.taskdef.TaskDefinitions;
 import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -67,7 +70,11 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
     /** The spec recorded in {@code file}: an evaluate JSON (its {@code spec}) or a spec alone. */
     static EvaluateSpec read(Path file) {
         Json root = Json.load(file);
-        Json j = root.has("spec") ? root.get("spec") : root;
+        return of(root.has("spec") ? root.get("spec") : root);
+    }
+
+    /** The spec recorded as {@code j} ({@link #toJson}). */
+    static EvaluateSpec of(Json j) {
         Map<String, String> taskSet = new LinkedHashMap<>();
         if (j.has("task_set")) {
             j.get("task_set").fieldNames().forEach(k -> taskSet.put(k, j.get("task_set").node().get(k).toString()));
@@ -107,6 +114,12 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
     /** The task's definition, as these configs give it. */
     TaskDefinition definition() {
         return configs.task(task);
+    }
+
+    /** What the evaluation runs with: this spec's configs and policies, twins from {@link Wiring}; {@code watcher} may be null. */
+    EvaluationSetup setup(CatchEvaluation.TickWatcher watcher, PrintStream console) {
+        return new EvaluationSetup(configs.controller(), configs.object(object), configs.limits(), configs.launches(), configs.evaluation(),
+                throwPolicies(), plan ? configs.planner(object) : null, Wiring::twinSimulator, watcher, null, console);
     }
 
     EvaluationRequest request(Path csv, Path plot, boolean exported) {

@@ -17,6 +17,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -41,23 +42,32 @@ final class WarmstartCommand implements Callable<Integer> {
     @Option(names = "--runs", paramLabel = "DIR", description = "where the run folder goes (default: runs/)")
     Path runs;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Override
     public Integer call() throws Exception {
+        cluster.validate();
         Warmstart.Config c = Warmstart.Config.parse(RunOptions.configFile(config, overrides));
         RunConfigs configs = TrainCommand.configs(c.train().run());
         ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), configs);
         double[] nominal = envs.space().toAction(configs.task(c.train().run().task()).newTask(c.train().run().object()).nominalThrow());
-        Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
+        // a cluster is reached before the run folder is made: a master that cannot be used leaves nothing behind
+        Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.rollouts(cluster, configs, "handsim warmstart "
+                + c.train().run().name() + " seed " + c.train().learner().seed()) : null;
+        Path dir = ClusterWiring.closingOnFailure(remote, () -> RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(),
+                c.train().learner().seed()));
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
         TrainCommand.recordSpec(dir, configs);
         Outputs.writeJson(dir.resolve("run.json"),
                 RunOptions.provenance(RunOptions.commandLine("warmstart", config, overrides), c.train().learner().seed()));
         System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "
-                + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
-                c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());
+                + "each at most, on %s%n", c.train().run().task(), c.train().run().object(), dir,
+                c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(),
+                cluster.remote() ? "--master " + cluster.master() : c.train().run().workers() + " workers");
         List<Warmstart.Search> searches;
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), c.train().run().workers())) {
-            searches = Warmstart.search(c, envs, nominal, rollouts, System.out);
+        try (Rollouts<Simulator> rollouts = remote != null ? remote : Wiring.rollouts(configs.model(), configs.sim(), c.train().run().workers())) {
+            searches = Warmstart.search(c, envs, nominal, rollouts, cluster.remote() ? PortableWarmstart.shipper(c, configs) : null, System.out);
         }
         ArrayNode all = Json.mapper().createArrayNode();
         for (Warmstart.Search s : searches) {

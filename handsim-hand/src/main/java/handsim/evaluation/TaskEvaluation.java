@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.report.Outputs;
+import handsim.rollout.RecordedTask;
 import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
@@ -47,10 +48,10 @@ public abstract class TaskEvaluation {
     /**
      * {@code task} that reads an episode back from the journal when a killed run of the same
      * command finished it, and otherwise runs it and journals its result at once (without a
-     * journal, {@code task} itself).
+     * journal, {@code task} itself); its results' JSON form is also how they travel from a cluster.
      */
-    protected <R> RolloutTask<Simulator, R> resumable(RolloutTask<Simulator, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
-        return setup.journal() == null ? task : setup.journal().resumable(task, write, read);
+    protected <R> RecordedTask<Simulator, R> resumable(RolloutTask<Simulator, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return setup.journal() == null ? new RecordedTask<>(task, write, read, null) : setup.journal().resumable(task, write, read);
     }
 
     /** Writes the CSV file, if one was asked for. */
