@@ -4,10 +4,9 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.report.Outputs;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
@@ -19,8 +18,8 @@ import java.util.TreeSet;
  */
 public final class Trajectory {
 
-    /** A body's drawable surface: its kind, triangles over {@code nodes} (indices into it). */
-    public record Surface(String name, SoftBody.Kind kind, int[] nodes, int[] triangles) {
+    /** A body's drawable surface: its kind, triangles over {@code nodes} (indices into it), a card's thickness (m; 0 for a fingertip). */
+    public record Surface(String name, SoftBody.Kind kind, int[] nodes, int[] triangles, double thickness) {
     }
 
     /** One frame: time (s) and, per surface, its nodes' positions (3 per node). */
@@ -44,7 +43,7 @@ public final class Trajectory {
             for (int i = 0; i < tri.length; i++) {
                 local[i] = java.util.Arrays.binarySearch(nodes, tri[i]);
             }
-            out.add(new Surface(b.name(), b.kind(), nodes, local));
+            out.add(new Surface(b.name(), b.kind(), nodes, local, b.thickness()));
         }
         return new Trajectory(out);
     }
@@ -70,7 +69,7 @@ public final class Trajectory {
         return List.copyOf(frames);
     }
 
-    /** Writes the JSON file atomically (a temporary file moved into place). */
+    /** Writes the JSON file atomically ({@link Outputs}). */
     public void write(Path file) throws IOException {
         ObjectNode root = Json.mapper().createObjectNode();
         ArrayNode ss = root.putArray("surfaces");
@@ -78,6 +77,7 @@ public final class Trajectory {
             ObjectNode o = ss.addObject();
             o.put("name", s.name());
             o.put("kind", s.kind().name());
+            o.put("thickness", s.thickness());
             ArrayNode nodes = o.putArray("nodes");
             for (int n : s.nodes()) {
                 nodes.add(n);
@@ -99,9 +99,7 @@ public final class Trajectory {
                 }
             }
         }
-        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-        Json.mapper().writeValue(tmp.toFile(), root);
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.write(file, out -> Json.mapper().writeValue(out, root));
     }
 
     /** Reads a file written by {@link #write}. */
@@ -110,7 +108,7 @@ public final class Trajectory {
         List<Surface> surfaces = new ArrayList<>();
         for (Json s : root.array("surfaces")) {
             surfaces.add(new Surface(s.string("name"), SoftBody.Kind.valueOf(s.string("kind")),
-                    ints(s.get("nodes").node()), ints(s.get("triangles").node())));
+                    ints(s.get("nodes").node()), ints(s.get("triangles").node()), s.number("thickness", 0)));
         }
         Trajectory t = new Trajectory(surfaces);
         for (Json f : root.array("frames")) {

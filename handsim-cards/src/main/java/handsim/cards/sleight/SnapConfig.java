@@ -4,10 +4,8 @@ import handsim.config.Json;
 import java.nio.file.Path;
 
 /** The Card Snapping scene from configs/cards/snap.json, validated field by field. */
-public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int cellsShort, int roundedCorners,
-                         double gapFraction, double[] semiAxes, String meshName, int[] grid, int softLayers,
-                         double pinchBelowTop, double initialGap, double holdDepth, double warmup,
-                         double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
+public record SnapConfig(CardSpec card, FingertipSpec fingertip, double pinchBelowTop, double initialGap, double holdDepth,
+                         double warmup, double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
                          int frameEvery, SnapParams defaults) {
 
     public static SnapConfig load(Path file) {
@@ -22,30 +20,10 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
     public static SnapConfig parse(Json j, String meshOverride) {
         j.allow("comment");
         Json card = j.get("card");
-        card.allow("comment");
-        int[] cells = ints(card, "cells", 2);
+        CardSpec cardSpec = CardSpec.parse(card);
         Json tip = j.get("fingertip");
-        tip.allow("comment");
-        String mesh = tip.string("mesh");
-        Json meshes = tip.get("meshes");
-        String chosen = meshOverride != null ? meshOverride : mesh;
-        if (!meshes.has(chosen)) {
-            throw meshOverride != null
-                    ? new IllegalArgumentException("fingertip mesh \"" + chosen + "\" is not among " + meshes.fieldNames())
-                    : tip.fieldError("mesh", "\"" + chosen + "\" is not among " + meshes.fieldNames());
-        }
-        int[] grid = null;
-        for (String name : meshes.fieldNames()) {
-            int[] g = ints(meshes, name, 3);
-            for (int v : g) {
-                if (v < 3 || v % 2 == 0) {
-                    throw meshes.fieldError(name, "grid counts must be odd and >= 3, got " + java.util.Arrays.toString(g));
-                }
-            }
-            if (name.equals(chosen)) {
-                grid = g;
-            }
-        }
+        FingertipSpec tipSpec = FingertipSpec.parse(tip, meshOverride);
+        double pinchBelowTop = tip.number("pinchBelowTop", 0, 1);
         Json hold = j.get("hold");
         hold.allow("comment");
         Json trial = j.get("trial");
@@ -53,38 +31,19 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
         double duration = trial.number("duration", 0.01, 100);
         SnapParams defaults = SnapParams.parse(j.get("params"));
         defaults.validate(duration, j.source() + ": params");
-        SnapConfig c = new SnapConfig(
-                card.number("length", 1e-3, 1), card.number("width", 1e-3, 1), cells[0], cells[1],
-                card.integer("roundedCorners", 0, 4), card.number("gapFraction", 0, 10),
-                tip.numbers("semiAxes", 3), chosen, grid, tip.integer("softLayers", 1, 100),
-                tip.number("pinchBelowTop", 0, 1),
+        SnapConfig c = new SnapConfig(cardSpec, tipSpec, pinchBelowTop,
                 hold.number("initialGap", 0, 0.01), hold.number("depth", 0, 0.01), hold.number("warmup", 0, 10),
                 duration, trial.number("alphaTarget", 0, 180), trial.number("dropLimit", 0, 10), trial.number("droppedObjective", 0, 1e6),
                 trial.integer("frameEvery", 1, 10_000),
                 defaults);
-        for (double a : c.semiAxes) {
-            if (!(a > 0)) {
-                throw tip.fieldError("semiAxes", "must be positive, got " + java.util.Arrays.toString(c.semiAxes));
-            }
-        }
-        if (cells[0] < 2 || cells[1] < 2) {
-            throw card.fieldError("cells", "need at least 2 x 2, got " + java.util.Arrays.toString(cells));
-        }
         for (Json node : new Json[] {card, tip, hold, trial, j}) {
             node.requireNoUnknownFields();
         }
         return c;
     }
 
-    private static int[] ints(Json j, String name, int n) {
-        double[] v = j.numbers(name, n);
-        int[] out = new int[n];
-        for (int i = 0; i < n; i++) {
-            if (v[i] != Math.rint(v[i])) {
-                throw j.fieldError(name, "expected whole numbers, got " + java.util.Arrays.toString(v));
-            }
-            out[i] = (int) v[i];
-        }
-        return out;
+    /** The fingertip resolution's name. */
+    public String meshName() {
+        return fingertip.meshName();
     }
 }

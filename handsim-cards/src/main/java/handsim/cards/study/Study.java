@@ -28,11 +28,6 @@ import java.util.Optional;
 import java.util.SplittableRandom;
 import java.util.TreeMap;
 import java.util.TreeSet;
-import java.util.concurrent.CompletionService;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorCompletionService;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -76,6 +71,8 @@ public final class Study {
     private final long seed;
     private final TpeSampler sampler;
     private final ObjectNode studyJson;
+    private double displayScale = 1;
+    private String displayUnit = "";
     /** Finished trials (complete or failed) by number. */
     private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
 
@@ -169,7 +166,8 @@ public final class Study {
     private static ObjectNode samplerDescription(StudyConfig config) {
         ObjectNode s = Json.mapper().createObjectNode();
         s.put("algorithm", config.multiObjective() ? "MOTPE (Ozaki et al. 2020)" : "TPE (Bergstra et al. 2011)");
-        s.put("semantics", "Optuna 3.6.1 TPESampler, independent sampling (multivariate=False)");
+        s.put("semantics", config.sampler().multivariate() ? "Optuna 3.6.1 TPESampler, multivariate=True"
+                : "Optuna 3.6.1 TPESampler, independent sampling (multivariate=False)");
         s.put("gamma", "min(ceil(0.1 n), 25)");
         s.put("weights", "1 below 25 trials; the oldest n - 25 ramp from 1/n to 1");
         s.put("trialRandom", "trial k: SplittableRandom seeded with the (k+1)-th nextLong of SplittableRandom(seed)");
@@ -204,6 +202,29 @@ public final class Study {
                 .min(Comparator.comparingDouble((TrialRecord t) -> d == Direction.MAXIMIZE ? -t.values()[0] : t.values()[0]));
     }
 
+    /**
+     * The trial a study reports: among the complete trials (the Pareto front when there are
+     * several objectives), the one closest to zero with each objective scaled by its tolerance
+     * (unscaled where it has none), the earliest of equals; for one objective without a
+     * tolerance, the best.
+     */
+    public Optional<TrialRecord> chosen() {
+        if (!config.multiObjective() && !config.hasTolerance(0)) {
+            return best();
+        }
+        List<TrialRecord> candidates = config.multiObjective() ? paretoFront()
+                : finished.values().stream().filter(TrialRecord::isComplete).toList();
+        return candidates.stream().min(Comparator.comparingDouble(t -> norm(config.scaled(t.values()))));
+    }
+
+    private static double norm(double[] v) {
+        double s = 0;
+        for (double x : v) {
+            s += x * x;
+        }
+        return Math.sqrt(s);
+    }
+
     /** The complete trials no other one dominates, in number order. */
     public List<TrialRecord> paretoFront() {
         List<CompletedTrial> complete = finished.values().stream().filter(TrialRecord::isComplete).map(TrialRecord::toCompleted).toList();
@@ -211,36 +232,38 @@ public final class Study {
     }
 
     /**
-     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads,
-     * with a progress line per finished trial on {@code progress} (null for none). Writes each
-     * trial's file as it finishes, best.json after each, the history plots at the end. If the
-     * calling thread is interrupted, the running trials are abandoned (they run again on
-     * resume), the report is written and InterruptedException is thrown.
+     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads of
+     * this JVM ({@link LocalTrials}); see {@link #run(TrialExecutor, int, PrintStream)}.
      */
     public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
-        if (nTrials < 1) {
-            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
-        }
         if (workers < 1) {
             throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
         }
+        try (LocalTrials local = new LocalTrials(objective, config, workers)) {
+            run(local, nTrials, progress);
+        }
+    }
+
+    /**
+     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code executor}, with a
+     * progress line per finished trial on {@code progress} (null for none). Writes each trial's
+     * file as it finishes, best.json after each, the history plots at the end. If the calling
+     * thread is interrupted, the running trials are abandoned (they run again on resume), the
+     * report is written and InterruptedException is thrown.
+     */
+    public void run(TrialExecutor executor, int nTrials, PrintStream progress) throws IOException, InterruptedException {
+        if (nTrials < 1) {
+            throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
+        }
         Progress log = new Progress(progress, this, nTrials);
-        log.start(workers);
-        ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
-            Thread t = new Thread(r, "study-worker");
-            t.setDaemon(true);
-            return t;
-        });
-        CompletionService<TrialRecord> done = new ExecutorCompletionService<>(pool);
+        log.start(executor.slots());
         TreeSet<Integer> running = new TreeSet<>();
         try {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < workers; k = nextToStart(nTrials, running)) {
-                    double[] params = suggest(k);
-                    int number = k;
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots(); k = nextToStart(nTrials, running)) {
                     running.add(k);
-                    done.submit(() -> evaluate(objective, number, params));
+                    executor.submit(k, suggest(k));
                 }
                 if (last != null) {
                     log.finished(last, running.size());
@@ -248,14 +271,13 @@ public final class Study {
                 if (running.isEmpty()) {
                     break;
                 }
-                last = result(done);
+                last = executor.take();
                 running.remove(last.number());
                 finished.put(last.number(), last);
                 writeJson(trialFile(last.number()), last.toJson(config));
                 writeBest();
             }
         } finally {
-            pool.shutdownNow();
             writeReport();
         }
         log.end();
@@ -300,51 +322,27 @@ public final class Study {
         return new SplittableRandom(s);
     }
 
-    private TrialRecord evaluate(Objective objective, int number, double[] x) {
-        long t0 = System.nanoTime();
-        Evaluation e;
-        try {
-            e = objective.evaluate(TrialParams.of(number, config, x));
-        } catch (Exception ex) {
-            return TrialRecord.failed(number, x, ex.toString(), (System.nanoTime() - t0) * 1e-9);
-        }
-        double seconds = (System.nanoTime() - t0) * 1e-9;
-        double[] values = e.values();
-        if (values.length != config.objectives().size()) {
-            throw new IllegalStateException("the objective returned " + values.length + " values for the study's " + config.objectives().size()
-                    + " objectives " + config.objectives());
-        }
-        for (int i = 0; i < values.length; i++) {
-            if (!Double.isFinite(values[i])) {
-                return TrialRecord.failed(number, x, config.objectives().get(i) + " is " + values[i], seconds);
-            }
-        }
-        return TrialRecord.complete(number, x, e, seconds);
-    }
-
-    private static TrialRecord result(CompletionService<TrialRecord> done) throws InterruptedException {
-        try {
-            return done.take().get();
-        } catch (ExecutionException e) {
-            Throwable cause = e.getCause();
-            if (cause instanceof RuntimeException r) {
-                throw r;
-            }
-            if (cause instanceof Error err) {
-                throw err;
-            }
-            throw new IllegalStateException(cause);
-        }
-    }
-
     private Path trialFile(int number) {
         return dir.resolve(TRIALS_DIR).resolve(String.format(Locale.ROOT, "trial-%04d.json", number));
     }
 
-    /** best.json and the history plots. */
+    /**
+     * Figures show the objectives multiplied by {@code scale} and labelled with {@code unit} (say
+     * 1000 and "mm" for objectives in metres); by default as they are.
+     */
+    public Study displayObjectives(double scale, String unit) {
+        this.displayScale = scale;
+        this.displayUnit = unit;
+        return this;
+    }
+
+    /** best.json, the history plots and, for several objectives, the Pareto front (pareto.png). */
     public void writeReport() throws IOException {
         writeBest();
         HistoryPlot.write(this);
+        if (config.multiObjective() && finished.values().stream().anyMatch(TrialRecord::isComplete)) {
+            ParetoPlot.write(this, displayScale, displayUnit);
+        }
     }
 
     private void writeBest() throws IOException {
@@ -359,6 +357,7 @@ public final class Study {
         } else {
             best().ifPresent(t -> root.set("best", t.toJson(config)));
         }
+        chosen().ifPresent(t -> root.set("chosen", t.toJson(config).put("meetsTolerances", config.meets(t.values()))));
         writeJson(dir.resolve(BEST_FILE), root);
     }
 

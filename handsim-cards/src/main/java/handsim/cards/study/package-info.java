@@ -4,7 +4,10 @@
  * ({@link handsim.cards.study.StudyConfig}) and a {@link handsim.cards.study.Study} that
  * suggests trials with {@code handsim.cards.tpe}, runs them on worker threads with results that
  * do not depend on the number of workers, keeps one JSON file per trial, resumes after a kill,
- * prints progress with an ETA and draws the optimisation history (thesis Fig. 4.9).
+ * prints progress with an ETA and draws the optimisation history (thesis Fig. 4.9) and, for
+ * several objectives, the Pareto front (Fig. 4.11). Where trials are evaluated is a
+ * {@link handsim.cards.study.TrialExecutor}; {@link handsim.cards.study.LocalTrials}, a thread
+ * pool, is the default.
  *
  * <p>A command runs one in a few lines:
  * <pre>

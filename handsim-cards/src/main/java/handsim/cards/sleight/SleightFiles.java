@@ -1,0 +1,56 @@
+package handsim.cards.sleight;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.Json;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The three config files a sleight's trial is built from, read with fields overridden by dotted
+ * path: configs/cards/SCENE.json (the sleight's scene), materials.json and solver.json. An
+ * override's key starts with the file it changes: {@code "snap.trial.duration" -> "0.3"},
+ * {@code "solver.parallel" -> "false"} (values in JSON).
+ */
+record SleightFiles(String sceneName, Json scene, Json materials, Json solver) {
+
+    static SleightFiles load(Path home, String sceneName, Map<String, String> overrides) {
+        Path dir = home.resolve("configs/cards");
+        Map<String, Map<String, String>> byFile = new LinkedHashMap<>();
+        for (String file : List.of(sceneName, "materials", "solver")) {
+            byFile.put(file, new LinkedHashMap<>());
+        }
+        overrides.forEach((key, value) -> {
+            Map<String, String> target = null;
+            for (String file : byFile.keySet()) {
+                if (key.startsWith(file + ".")) {
+                    target = byFile.get(file);
+                    target.put(key.substring(file.length() + 1), value);
+                }
+            }
+            if (target == null) {
+                throw new IllegalArgumentException("--set " + key + ": the key must start with " + sceneName + "., materials. or solver.");
+            }
+        });
+        return new SleightFiles(sceneName,
+                Json.load(dir.resolve(sceneName + ".json"), byFile.get(sceneName)),
+                Json.load(dir.resolve("materials.json"), byFile.get("materials")),
+                Json.load(dir.resolve("solver.json"), byFile.get("solver")));
+    }
+
+    /**
+     * What a trial was built from, for a study's record: the sleight, fingertip mesh and card
+     * preset, and the three files as read (with any overrides).
+     */
+    ObjectNode inputs(String sleight, String mesh, String cardPreset) {
+        ObjectNode inputs = Json.mapper().createObjectNode();
+        inputs.put("sleight", sleight);
+        inputs.put("mesh", mesh);
+        inputs.put("card", cardPreset);
+        inputs.set(sceneName, scene.node().deepCopy());
+        inputs.set("materials", materials.node().deepCopy());
+        inputs.set("solver", solver.node().deepCopy());
+        return inputs;
+    }
+}
