@@ -1,9 +1,7 @@
 package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.cards.sleight.SnapParams;
-import handsim.cards.sleight.SnapStudy;
-import handsim.cards.sleight.SnapTrial;
+import handsim.cards.sleight.CardSleight;
 import handsim.cards.study.Study;
 import handsim.cards.study.StudyConfig;
 import handsim.cards.study.TrialRecord;
@@ -14,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -22,22 +21,24 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code handsim cards optimize}: a TPE study of a card sleight (thesis 3.2.4, Fig. 4.9), kept in
- * a folder that the same command resumes after a kill, with the best trial replayed into
- * {@code best/} (its trajectory, frames and a strip like thesis Fig. 4.8).
+ * {@code handsim cards optimize}: a TPE or MOTPE study of a card sleight (thesis 3.2.4, Fig. 4.9,
+ * 4.11), kept in a folder that the same command resumes after a kill, with the chosen trial
+ * replayed into {@code chosen/} (its trajectory, frames and a strip).
  */
 @Command(name = "optimize", mixinStandardHelpOptions = true,
-        description = "Search a sleight's bone trajectory with TPE (Optuna 3.6.1's semantics): trials as JSON, resumable after a kill "
-                + "(run the same command again), the optimisation history (thesis Fig. 4.9), the best parameters, and the best "
-                + "trial's frames and strip (thesis Fig. 4.8). Results do not depend on --workers.")
+        description = "Search a sleight's bone trajectory with TPE / MOTPE (Optuna 3.6.1's semantics): trials as JSON, resumable after a "
+                + "kill (run the same command again), the optimisation history (thesis Fig. 4.9), the Pareto front of several objectives "
+                + "(Fig. 4.11), the chosen trial (the one closest to zero with each objective scaled by its tolerance) and its frames "
+                + "and strip. Results do not depend on --workers.")
 final class CardsOptimize implements Callable<Integer> {
 
-    static final String BEST_DIR = "best";
+    static final String CHOSEN_DIR = "chosen";
 
-    @Option(names = "--sleight", required = true, paramLabel = "NAME", description = "the sleight to optimise: snap (Card Snapping, thesis 4.2.4)")
+    @Option(names = "--sleight", required = true, paramLabel = "NAME", description = "the sleight to optimise: snap (Card Snapping, thesis 4.2.4) "
+            + "or double-lift (Double Lift, thesis 4.2.5)")
     String sleight;
 
-    @Option(names = "--trials", required = true, paramLabel = "N", description = "run until trials 0 .. N-1 have finished (the thesis ran 89)")
+    @Option(names = "--trials", required = true, paramLabel = "N", description = "run until trials 0 .. N-1 have finished (the thesis ran 89 and 297)")
     int trials;
 
     @Option(names = "--seed", required = true, paramLabel = "S", description = "the study's seed")
@@ -51,16 +52,16 @@ final class CardsOptimize implements Callable<Integer> {
             + "a folder holding a study resumes it")
     Path out;
 
-    @Option(names = "--config", paramLabel = "FILE", description = "the study's search space, sampler settings and parallelTrials "
-            + "(default: configs/cards/snap-study.json)")
+    @Option(names = "--config", paramLabel = "FILE", description = "the study's objectives (with tolerances), search space, sampler "
+            + "settings and parallelTrials (default: configs/cards/SLEIGHT-study.json)")
     Path config;
 
     @Mixin
     CardsSceneOptions scene;
 
-    @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (snap, materials, "
-            + "solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part of "
-            + "the study, so a resume needs the same")
+    @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (the sleight's, "
+            + "materials, solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part "
+            + "of the study, so a resume needs the same")
     List<String> overrides = List.of();
 
     @Spec
@@ -68,9 +69,6 @@ final class CardsOptimize implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        if (!sleight.equals("snap")) {
-            throw new IllegalArgumentException("--sleight must be snap, got \"" + sleight + "\"");
-        }
         if (trials < 1) {
             throw new IllegalArgumentException("--trials must be >= 1, got " + trials);
         }
@@ -78,14 +76,18 @@ final class CardsOptimize implements Callable<Integer> {
             throw new IllegalArgumentException("--workers must be >= 1, got " + workers);
         }
         scene.checkFrameSize();
-        Path configFile = config != null ? config : Home.resolve("configs/cards/snap-study.json");
+        if (!handsim.cards.sleight.Sleights.NAMES.contains(sleight)) {
+            throw new IllegalArgumentException("--sleight must be one of " + String.join(", ", handsim.cards.sleight.Sleights.NAMES)
+                    + ", got \"" + sleight + "\"");
+        }
+        Path configFile = config != null ? config : CardsCommand.studyConfig(sleight);
         if (!Files.isRegularFile(configFile)) {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
         }
         StudyConfig studyConfig = StudyConfig.load(configFile);
-        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, RunOptions.keyValues(overrides));
-        SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
-        Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
+        CardSleight trial = CardsCommand.sleight(sleight, scene, RunOptions.keyValues(overrides));
+        trial.checkSearchSpace(studyConfig, configFile.toString());
+        Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.meshName() + "__" + seed);
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
             throw new IllegalArgumentException("--out " + dir + " is a file, not a folder");
         }
@@ -93,51 +95,64 @@ final class CardsOptimize implements Callable<Integer> {
 
         ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs());
         Study study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
-        System.out.printf(Locale.ROOT, "handsim cards optimize: Card Snapping, %s fingertips (%d nodes, %d free), %s cards, alpha_target %s deg%n",
-                trial.scene().config().meshName(), trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(),
-                trial.inputs().get("card").asText(), trial.scene().config().alphaTargetDegrees());
+        if (studyConfig.multiObjective()) {
+            study.displayObjectives(1000, "mm"); // Double Lift's objectives are lengths in metres
+        }
+        System.out.printf(Locale.ROOT, "handsim cards optimize: %s, %s fingertips (%d nodes, %d free), %s cards, %s%n", trial.title(),
+                trial.meshName(), trial.world().nodeCount(), trial.world().freeNodeCount(), trial.inputs().get("card").asText(),
+                studyConfig.sampler().multivariate() ? "multivariate TPE" : "independent TPE");
         long h0 = System.nanoTime();
-        trial.heldState();
-        System.out.printf(Locale.ROOT, "hold (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
-        study.run(SnapStudy.objective(trial), trials, threads, System.out);
+        trial.startState(trial.defaults());
+        System.out.printf(Locale.ROOT, "start (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
+        study.run(trial.objective(), trials, threads, System.out);
 
-        TrialRecord best = study.best().orElse(null);
-        if (best == null) {
-            System.out.println("no trial completed: no best trial to replay");
+        TrialRecord chosen = study.chosen().orElse(null);
+        if (chosen == null) {
+            System.out.println("no trial completed: no trial to replay");
             return 1;
         }
-        System.out.printf(Locale.ROOT, "best: trial %d, objective %.4g deg, alpha_end %.4g deg; params %s%n", best.number(), best.values()[0],
-                best.info().get("alphaEnd"), best.trialParams(studyConfig).values());
-        replayBest(dir.resolve(BEST_DIR), best, studyConfig, trial);
-        System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history.png, " + BEST_DIR + "/)");
+        System.out.printf(Locale.ROOT, "chosen: trial %d, %s%s; params %s%n", chosen.number(), values(studyConfig, chosen),
+                studyConfig.hasTolerances() ? (studyConfig.meets(chosen.values()) ? ", meets every tolerance" : ", MISSES a tolerance") : "",
+                chosen.trialParams(studyConfig).values());
+        replay(dir.resolve(CHOSEN_DIR), chosen, studyConfig, trial);
+        System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history*.png" + (studyConfig.multiObjective() ? ", pareto.png" : "")
+                + ", " + CHOSEN_DIR + "/)");
         return 0;
     }
 
+    static String values(StudyConfig c, TrialRecord t) {
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < c.objectives().size(); i++) {
+            s.append(i == 0 ? "" : ", ").append(c.objectives().get(i)).append(' ').append(String.format(Locale.ROOT, "%.4g", t.values()[i]));
+        }
+        return s.toString();
+    }
+
     /**
-     * Runs the best trial again, recording it, into {@code bestDir} (trajectory, frames, strip,
+     * Runs the chosen trial again, recording it, into {@code chosenDir} (trajectory, frames, strip,
      * result.json with the trial's number); skipped when the folder already holds that trial.
-     * Trials are deterministic, so the replay reproduces the recorded objective bit for bit.
+     * Trials are deterministic, so the replay reproduces the recorded objectives bit for bit.
      */
-    private void replayBest(Path bestDir, TrialRecord best, StudyConfig studyConfig, SnapTrial trial) throws IOException {
-        Path result = bestDir.resolve("result.json");
+    private void replay(Path chosenDir, TrialRecord chosen, StudyConfig studyConfig, CardSleight trial) throws IOException {
+        Path result = chosenDir.resolve("result.json");
         boolean framesWanted = !scene.noFrames;
-        if (Files.exists(result) && Json.load(result).integer("trial") == best.number()
-                && (!framesWanted || Files.exists(bestDir.resolve("strip.png")))) {
-            System.out.println("best trial " + best.number() + " already recorded in " + bestDir);
+        if (Files.exists(result) && Json.load(result).integer("trial") == chosen.number()
+                && (!framesWanted || Files.exists(chosenDir.resolve("strip.png")))) {
+            System.out.println("chosen trial " + chosen.number() + " already recorded in " + chosenDir);
             return;
         }
-        System.out.println("replaying best trial " + best.number() + " to record its frames...");
-        SnapParams p = SnapStudy.params(best.trialParams(studyConfig));
-        CardsCommand.Recorded run = CardsCommand.record(trial, p);
-        double recorded = best.values()[0];
-        boolean same = Double.compare(run.result().objective(), recorded) == 0;
+        System.out.println("replaying chosen trial " + chosen.number() + " to record its frames...");
+        Map<String, Double> p = chosen.trialParams(studyConfig).values();
+        CardsRecording.Recorded run = CardsRecording.record(trial, p);
+        boolean same = java.util.Arrays.equals(run.outcome().values(), chosen.values());
         if (!same) {
-            System.out.printf(Locale.ROOT, "the replay's objective %.17g differs from the trial's %.17g: the code or configs changed "
-                    + "since the trial ran%n", run.result().objective(), recorded);
+            System.out.printf(Locale.ROOT, "the replay's objectives %s differ from the trial's %s: the code or configs changed since the "
+                    + "trial ran%n", java.util.Arrays.toString(run.outcome().values()), java.util.Arrays.toString(chosen.values()));
         }
-        ObjectNode json = CardsCommand.resultJson(run.result(), p, trial);
-        json.put("trial", best.number());
+        ObjectNode json = CardsRecording.resultJson(trial, p, run, studyConfig.objectives());
+        json.put("trial", chosen.number());
         json.put("reproducesTrial", same);
-        CardsCommand.writeRecording(bestDir, run, json, scene.frameWidth(), scene.height);
+        json.put("meetsTolerances", studyConfig.meets(run.outcome().values()));
+        CardsRecording.write(chosenDir, run, json, CardViews.of(sleight, ViewerSession.config()), scene.frameWidth(), scene.height);
     }
 }

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code handsim cards optimize --sleight snap} end to end on coarse fingertips and a 0.1 s
- * trial: the study folder, the best trial replayed with its frames and played by the viewer, a
+ * trial: the study folder, the best (chosen) trial replayed with its frames and played by the viewer, a
  * resume after an interruption that gives the trials of an uninterrupted study run on another
  * number of workers, and bad input refused with status 2.
  */
@@ -61,16 +61,18 @@ class CardsOptimizeTest {
             assertTrue(t.isComplete(), "trial " + t.number() + ": " + t.error());
             assertTrue(t.info().get("minGap") > 0, "no interpenetration in trial " + t.number());
         }
-        // best.json names the trial of least objective; best/ holds its replay, which reproduces it
+        // best.json names the trial of least objective, which is also the chosen one (a single objective); chosen/ holds
+        // its replay, which reproduces it
         TrialRecord best = study.best().orElseThrow();
         double least = study.trials().stream().mapToDouble(t -> t.values()[0]).min().orElseThrow();
         assertEquals(least, best.values()[0], 0.0);
         assertEquals(best.number(), Json.load(whole.resolve(Study.BEST_FILE)).get("best").integer("number"));
-        Json replay = Json.load(whole.resolve("best/result.json"));
+        assertEquals(best.number(), Json.load(whole.resolve(Study.BEST_FILE)).get("chosen").integer("number"));
+        Json replay = Json.load(whole.resolve("chosen/result.json"));
         assertEquals(best.number(), replay.integer("trial"));
-        assertEquals(best.values()[0], replay.number("objectiveDegrees"), 0.0, "the replay gives the trial's objective bit for bit");
+        assertEquals(best.values()[0], replay.get("objectives").number("objective"), 0.0, "the replay gives the trial's objective bit for bit");
         assertTrue(replay.bool("reproducesTrial", false));
-        for (String f : List.of("history.png", "best/strip.png", "best/frames/00000.png", "best/trajectory.json")) {
+        for (String f : List.of("history.png", "chosen/strip.png", "chosen/frames/00000.png", "chosen/trajectory.json")) {
             assertTrue(Files.size(whole.resolve(f)) > 100, f);
         }
         // study.json records what the objective is (mesh and overridden snap.json)
