@@ -24,7 +24,7 @@ public record LiftConfig(CardSpec card, FingertipSpec fingertip, double initialG
                          LiftParams defaults) {
 
     public static LiftConfig parse(Json j, String meshOverride) {
-        j.allow("comment");
+        j.allow("comment", "solver"); // the solver.json fields the sleight sets (SleightFiles)
         Json card = j.get("card");
         CardSpec cardSpec = CardSpec.parse(card);
         Json tip = j.get("fingertip");

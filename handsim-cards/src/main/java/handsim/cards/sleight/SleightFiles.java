@@ -11,7 +11,8 @@ import java.util.Map;
  * The three config files a sleight's trial is built from, read with fields overridden by dotted
  * path: configs/cards/SCENE.json (the sleight's scene), materials.json and solver.json. An
  * override's key starts with the file it changes: {@code "snap.trial.duration" -> "0.3"},
- * {@code "solver.parallel" -> "false"} (values in JSON).
+ * {@code "solver.parallel" -> "false"} (values in JSON). A scene's own {@code solver} object sets
+ * fields of solver.json for that sleight; the solver file is kept as the trial reads it.
  */
 record SleightFiles(String sceneName, Json scene, Json materials, Json solver) {
 
@@ -33,10 +34,27 @@ record SleightFiles(String sceneName, Json scene, Json materials, Json solver) {
                 throw new IllegalArgumentException("--set " + key + ": the key must start with " + sceneName + "., materials. or solver.");
             }
         });
-        return new SleightFiles(sceneName,
-                Json.load(dir.resolve(sceneName + ".json"), byFile.get(sceneName)),
-                Json.load(dir.resolve("materials.json"), byFile.get("materials")),
-                Json.load(dir.resolve("solver.json"), byFile.get("solver")));
+        Json scene = Json.load(dir.resolve(sceneName + ".json"), byFile.get(sceneName));
+        Map<String, String> solver = new LinkedHashMap<>(sceneSolverFields(scene));
+        solver.putAll(byFile.get("solver")); // a --set of solver.json wins over the scene's own choice
+        return new SleightFiles(sceneName, scene, Json.load(dir.resolve("materials.json"), byFile.get("materials")),
+                Json.load(dir.resolve("solver.json"), solver));
+    }
+
+    /**
+     * The solver.json fields a scene sets for itself, its optional {@code solver} object (say
+     * Double Lift's Gauss–Newton contact Hessians), as overrides in JSON text; comments left out.
+     */
+    static Map<String, String> sceneSolverFields(Json scene) {
+        Map<String, String> out = new LinkedHashMap<>();
+        if (scene.has("solver")) {
+            scene.get("solver").node().fields().forEachRemaining(f -> {
+                if (!f.getKey().equals("comment")) {
+                    out.put(f.getKey(), f.getValue().toString());
+                }
+            });
+        }
+        return out;
     }
 
     /**
