@@ -31,7 +31,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "robust", mixinStandardHelpOptions = true,
         description = "Replay a study's chosen trial with each parameter moved by +-1 % of its range, one at a time, and on the other "
-                + "fingertip resolution (thesis <-> reduced); report how many replays still meet the study's tolerances and write "
+                + "fingertip resolution (thesis <-> reduced, coarse -> reduced); report how many replays still meet the study's tolerances and write "
                 + "robust.json into the study folder.")
 final class CardsRobust implements Callable<Integer> {
 
@@ -64,7 +64,7 @@ final class CardsRobust implements Callable<Integer> {
         TrialRecord chosen = study.chosen().orElseThrow(() -> new IllegalArgumentException("--study " + studyDir + " has no complete trial"));
         var inputs = Json.load(studyDir.resolve(Study.STUDY_FILE)).get("objective").node();
         String mesh = inputs.get("mesh").asText();
-        String other = mesh.equals("thesis") ? "reduced" : "thesis";
+        String other = otherMesh(mesh);
         CardSleight same = Sleights.fromInputs(inputs, null, CardsCommand.checkpoints());
         CardSleight otherMesh = Sleights.fromInputs(inputs, other, CardsCommand.checkpoints());
         List<Replay> replays = replays(config, chosen);
@@ -94,6 +94,11 @@ final class CardsRobust implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "%d of %d replays (%.0f %%) meet every tolerance; wrote %s%n", met, results.size(), 100.0 * met / results.size(),
                 studyDir.resolve("robust.json"));
         return 0;
+    }
+
+    /** The other resolution of a study's fingertips: thesis and reduced each other's; coarse, a test mesh, against reduced. */
+    static String otherMesh(String mesh) {
+        return mesh.equals("reduced") ? "thesis" : "reduced";
     }
 
     /** Each parameter −1 % and +1 % of its range, one at a time, then the chosen parameters on the other mesh. */

@@ -27,7 +27,7 @@ class CardsOptimizeTest {
 
     /** A search space that fits the 0.1 s trial; two start-up trials, so the third comes from TPE. */
     private static final String CONFIG = """
-            {"objectives": [{"name": "objective", "direction": "minimize"}],
+            {"objectives": [{"name": "objective", "direction": "minimize", "tolerance": 5}],
              "params": [{"name": "t0", "low": 0.0, "high": 0.02}, {"name": "t1", "low": 0.02, "high": 0.04},
                         {"name": "vp", "low": 0.001, "high": 0.004}, {"name": "t2", "low": 0.04, "high": 0.05},
                         {"name": "t3", "low": 0.05, "high": 0.1}, {"name": "vs", "low": 0.005, "high": 0.04}],
@@ -79,6 +79,20 @@ class CardsOptimizeTest {
         Json recorded = Json.load(whole.resolve(Study.STUDY_FILE)).get("objective");
         assertEquals("coarse", recorded.string("mesh"));
         assertEquals(0.1, recorded.get("snap").get("trial").number("duration"), 0.0);
+
+        // cards robust replays the chosen trial 13 times (each of 6 parameters -1 % and +1 % of its range, and on the
+        // reduced fingertips) and counts those within the 5 degree tolerance
+        assertEquals(0, Main.run("cards", "robust", "--study", whole.toString(), "--workers", "2"));
+        Json robust = Json.load(whole.resolve("robust.json"));
+        assertEquals(13, robust.integer("replays"));
+        int met = 0;
+        for (Json r : robust.array("results")) {
+            boolean within = r.has("values") && r.get("values").node().get(0).asDouble() <= 5;
+            assertEquals(within, r.bool("meetsTolerances", !within), r.string("label"));
+            met += within ? 1 : 0;
+        }
+        assertEquals(met, robust.integer("meetTolerances"));
+        assertEquals("reduced", robust.array("results").get(12).string("mesh"));
 
         // the viewer plays the study's best trial; a folder without one is refused
         assertEquals(0, Main.run("view", "--scene", "snap", "--study", whole.toString(), "--benchmark-frames", "2"));
