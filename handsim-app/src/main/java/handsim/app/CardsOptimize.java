@@ -56,6 +56,10 @@ final class CardsOptimize implements Callable<Integer> {
             + "settings and parallelTrials (default: configs/cards/SLEIGHT-study.json)")
     Path config;
 
+    @Option(names = "--sampler", paramLabel = "KIND", description = "independent or multivariate TPE (Optuna's multivariate=False / True) "
+            + "instead of the config's choice; part of the study")
+    String sampler;
+
     @Mixin
     CardsSceneOptions scene;
 
@@ -84,7 +88,7 @@ final class CardsOptimize implements Callable<Integer> {
         if (!Files.isRegularFile(configFile)) {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
         }
-        StudyConfig studyConfig = StudyConfig.load(configFile);
+        StudyConfig studyConfig = withSampler(StudyConfig.load(configFile), sampler);
         CardSleight trial = CardsCommand.sleight(sleight, scene, RunOptions.keyValues(overrides));
         trial.checkSearchSpace(studyConfig, configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.meshName() + "__" + seed);
@@ -118,6 +122,20 @@ final class CardsOptimize implements Callable<Integer> {
         System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history*.png" + (studyConfig.multiObjective() ? ", pareto.png" : "")
                 + ", " + CHOSEN_DIR + "/)");
         return 0;
+    }
+
+    /** The config with independent or multivariate TPE as {@code kind} asks (null: as it is). */
+    static StudyConfig withSampler(StudyConfig c, String kind) {
+        if (kind == null) {
+            return c;
+        }
+        if (!kind.equals("independent") && !kind.equals("multivariate")) {
+            throw new IllegalArgumentException("--sampler must be independent or multivariate, got \"" + kind + "\"");
+        }
+        var s = c.sampler();
+        return new StudyConfig(c.objectives(), c.directions(), c.tolerances(), c.params(), new handsim.cards.tpe.TpeSettings(s.nStartupTrials(),
+                s.nEiCandidates(), s.considerPrior(), s.priorWeight(), s.considerMagicClip(), s.considerEndpoints(), kind.equals("multivariate")),
+                c.parallelTrials());
     }
 
     static String values(StudyConfig c, TrialRecord t) {
