@@ -80,6 +80,10 @@ final class CardsRecording {
             writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
             System.out.println("wrote " + out.resolve("strip.png") + " (" + STRIP_FRAMES + " frames, start to end)");
         }
+        if (run.trajectory().surfaces().stream().anyMatch(s -> s.name().equals("card3"))) {
+            LiftFigure.write(run.trajectory(), "Double Lift: rise of the top cards and the fingertips", out.resolve("heights.png"));
+            System.out.println("wrote " + out.resolve("heights.png"));
+        }
         Outputs.writeJson(out.resolve("result.json"), result);
         System.out.println("wrote " + out.resolve("result.json"));
     }
