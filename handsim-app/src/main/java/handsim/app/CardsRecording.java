@@ -53,6 +53,8 @@ final class CardsRecording {
         System.out.printf(Locale.ROOT, "min gap     %.3e m over the run (%s)%n", c.minGap(), c.minGap() > 0 ? "no interpenetration" : "INTERPENETRATION");
         System.out.printf(Locale.ROOT, "newton      %d iterations over %d steps, %.0f per simulated second, %.3f s each; at most %d contacts%n",
                 c.newtonIterations(), c.steps(), c.newtonIterations() / c.simulatedSeconds(), c.secondsPerIteration(), c.maxContacts());
+        System.out.printf(Locale.ROOT, "            at most %d in one step, %d steps unconverged, %d line-search halvings%n",
+                c.mostNewtonIterationsInAStep(), c.unconvergedSteps(), c.lineSearchHalvings());
         System.out.printf(Locale.ROOT, "wall time   %.1f s: assembly %.1f s, contact %.1f s, solve %.1f s%n", c.wallSeconds(),
                 c.assemblySeconds(), c.contactSeconds(), c.solveSeconds());
     }

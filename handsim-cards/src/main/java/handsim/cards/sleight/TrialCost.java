@@ -11,10 +11,13 @@ import handsim.cards.study.Evaluation;
  * positive means no interpenetration), steps, Newton iterations, simulated time (s), and the
  * wall time (s) split into assembly (energies, gradients, Hessians), contact (broad and narrow
  * phase, CCD) and solve (factorisation, CG, substitution), with the most active contacts at a
- * step's end.
+ * step's end. Where a slow trial's time goes: the most Newton iterations one step took (the
+ * solver's maxNewtonIterations bounds it), the steps that reached that bound unconverged, and the
+ * line search's halvings.
  */
 public record TrialCost(double minGap, long steps, long newtonIterations, double simulatedSeconds, double wallSeconds,
-                        double assemblySeconds, double contactSeconds, double solveSeconds, int maxContacts) {
+                        double assemblySeconds, double contactSeconds, double solveSeconds, int maxContacts,
+                        long mostNewtonIterationsInAStep, long unconvergedSteps, long lineSearchHalvings) {
 
     /** Receives the state after every step of a trial (for recording frames). */
     public interface StepListener {
@@ -25,9 +28,11 @@ public record TrialCost(double minGap, long steps, long newtonIterations, double
     static TrialCost simulate(SoftSimulator sim, SimState state, int steps, double timeStep, StepListener listener) {
         long start = System.nanoTime();
         double minGap = Double.POSITIVE_INFINITY;
+        long most = 0;
         for (int i = 0; i < steps; i++) {
             StepStats st = sim.step(state);
             minGap = Math.min(minGap, st.minGap);
+            most = Math.max(most, st.newtonIterations);
             if (listener != null) {
                 listener.afterStep(state, st);
             }
@@ -35,7 +40,8 @@ public record TrialCost(double minGap, long steps, long newtonIterations, double
         double wall = (System.nanoTime() - start) * 1e-9;
         StepStats total = sim.stats();
         return new TrialCost(minGap, total.steps, total.newtonIterations, steps * timeStep, wall, total.assemblyNanos * 1e-9,
-                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts);
+                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts, most, total.unconvergedSteps,
+                total.lineSearchHalvings);
     }
 
     /** Wall time per Newton iteration (s). */
@@ -48,6 +54,9 @@ public record TrialCost(double minGap, long steps, long newtonIterations, double
         return e.with("minGap", minGap)
                 .with("newtonIterations", newtonIterations)
                 .with("maxContacts", maxContacts)
+                .with("mostNewtonIterationsInAStep", mostNewtonIterationsInAStep)
+                .with("unconvergedSteps", unconvergedSteps)
+                .with("lineSearchHalvings", lineSearchHalvings)
                 .with("wallSeconds", wallSeconds)
                 .with("assemblySeconds", assemblySeconds)
                 .with("contactSeconds", contactSeconds)
@@ -60,6 +69,9 @@ public record TrialCost(double minGap, long steps, long newtonIterations, double
         o.put("steps", steps);
         o.put("newtonIterations", newtonIterations);
         o.put("maxContacts", maxContacts);
+        o.put("mostNewtonIterationsInAStep", mostNewtonIterationsInAStep);
+        o.put("unconvergedSteps", unconvergedSteps);
+        o.put("lineSearchHalvings", lineSearchHalvings);
         o.put("wallSeconds", wallSeconds);
         o.put("secondsPerNewtonIteration", secondsPerIteration());
         o.put("assemblySeconds", assemblySeconds);
