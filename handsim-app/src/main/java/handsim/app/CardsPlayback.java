@@ -14,8 +14,12 @@ final class CardsPlayback {
     private CardsPlayback() {
     }
 
-    /** Plays {@code file} (null: the configured Card Snapping trial, run first with coarse fingertips). */
-    static int play(String scene, Path file, int maxFrames) {
+    /**
+     * Plays {@code file} (null: the configured Card Snapping trial, run first with coarse
+     * fingertips), for {@code maxFrames} drawn frames when positive, and writes the last one to
+     * {@code screenshot} when not null.
+     */
+    static int play(String scene, Path file, int maxFrames, Path screenshot) {
         Trajectory t;
         if (file != null) {
             t = Trajectory.read(file);
@@ -33,8 +37,11 @@ final class CardsPlayback {
         List<SurfacePlayer.Frame> frames = shown.frames().stream()
                 .map(f -> new SurfacePlayer.Frame(f.time(), CardViews.surfaces(shown, f, view))).toList();
         int drawn = SurfacePlayer.play("handsim: " + (scene.equals("snap") ? "Card Snapping" : "Double Lift"), frames, CardViews.camera(view),
-                config, 0.25, maxFrames);
+                config, 0.25, maxFrames, screenshot);
         System.out.println("handsim view: drew " + drawn + " frames (a quarter of real time, looping)");
+        if (screenshot != null) {
+            System.out.println("handsim view: screenshot " + screenshot);
+        }
         return 0;
     }
 }

@@ -40,11 +40,12 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        if (cards.given()) {
-            return CardsPlayback.play(cards.scene, cards.file(false), benchmarkFrames);
-        }
         if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
+        }
+        if (cards.given()) {
+            new OutputPaths().file("--screenshot", screenshot).check();
+            return CardsPlayback.play(cards.scene, cards.file(false), benchmarkFrames, screenshot);
         }
         who.validateFlipPolicies();
         HeightGoals goals = DemoCommand.parseHeights(heights);
