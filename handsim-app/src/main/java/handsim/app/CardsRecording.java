@@ -26,9 +26,13 @@ final class CardsRecording {
 
     static final int STRIP_FRAMES = 5;
 
-    /** A trial's outcome and the trajectory recorded while it ran. */
-    record Recorded(CardSleight.Outcome outcome, Trajectory trajectory) {
+    /** A trial's outcome, the trajectory recorded while it ran, and one line of steps.csv per step. */
+    record Recorded(CardSleight.Outcome outcome, Trajectory trajectory, List<String> steps) {
     }
+
+    /** steps.csv's header: each step's simulated time (s), solver work and wall time (s) split, smallest gap (m). */
+    static final String STEPS_HEADER = "step,time,newtonIterations,converged,lineSearchHalvings,factorisations,cgIterations,contacts,minGap,"
+            + "assemblySeconds,contactSeconds,solveSeconds";
 
     private CardsRecording() {
     }
@@ -38,12 +42,16 @@ final class CardsRecording {
         Trajectory trajectory = Trajectory.of(sleight.world());
         trajectory.record(sleight.startState(params));
         int every = sleight.frameEvery();
+        List<String> steps = new java.util.ArrayList<>();
         CardSleight.Outcome outcome = sleight.run(params, (state, step) -> {
             if (state.steps % every == 0) {
                 trajectory.record(state);
             }
+            steps.add(String.format(Locale.ROOT, "%d,%.4f,%d,%b,%d,%d,%d,%d,%.6e,%.4f,%.4f,%.4f", state.steps, state.time, step.newtonIterations,
+                    step.unconvergedSteps == 0, step.lineSearchHalvings, step.factorisations, step.cgIterations, step.maxContacts, step.minGap,
+                    step.assemblyNanos * 1e-9, step.contactNanos * 1e-9, step.solveNanos * 1e-9));
         });
-        return new Recorded(outcome, trajectory);
+        return new Recorded(outcome, trajectory, steps);
     }
 
     /** Prints what a trial did: the sleight's lines, the smallest gap, Newton iterations, the wall time and its split. */
@@ -69,13 +77,15 @@ final class CardsRecording {
     }
 
     /**
-     * Writes trajectory.json, then (unless {@code width} is 0) frames/ and strip.png, and last
+     * Writes trajectory.json and steps.csv, then (unless {@code width} is 0) frames/ and strip.png, and last
      * result.json, each atomically: a folder with result.json holds the whole recording.
      */
     static void write(Path out, Recorded run, ObjectNode result, CardViews.View view, int width, int height) throws IOException {
         Files.createDirectories(out);
         run.trajectory().write(out.resolve("trajectory.json"));
         System.out.println("wrote " + out.resolve("trajectory.json"));
+        Outputs.writeString(out.resolve("steps.csv"), STEPS_HEADER + "\n" + String.join("\n", run.steps()) + "\n");
+        System.out.println("wrote " + out.resolve("steps.csv") + " (each step's Newton iterations, contacts, smallest gap and wall time)");
         if (width > 0) {
             int n = renderFrames(run.trajectory(), view, out.resolve("frames"), width, height);
             System.out.println("wrote " + n + " frames to " + out.resolve("frames"));
