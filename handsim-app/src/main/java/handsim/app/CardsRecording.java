@@ -30,9 +30,9 @@ final class CardsRecording {
     record Recorded(CardSleight.Outcome outcome, Trajectory trajectory, List<String> steps) {
     }
 
-    /** steps.csv's header: each step's simulated time (s), solver work and wall time (s) split, smallest gap (m). */
+    /** steps.csv's header: each step's simulated time (s), solver work, smallest gap (m), barrier stiffness κ and its cap, wall time (s) split. */
     static final String STEPS_HEADER = "step,time,newtonIterations,converged,lineSearchHalvings,factorisations,cgIterations,contacts,minGap,"
-            + "assemblySeconds,contactSeconds,solveSeconds";
+            + "kappa,kappaMax,assemblySeconds,contactSeconds,solveSeconds";
 
     private CardsRecording() {
     }
@@ -47,9 +47,9 @@ final class CardsRecording {
             if (state.steps % every == 0) {
                 trajectory.record(state);
             }
-            steps.add(String.format(Locale.ROOT, "%d,%.4f,%d,%b,%d,%d,%d,%d,%.6e,%.4f,%.4f,%.4f", state.steps, state.time, step.newtonIterations,
+            steps.add(String.format(Locale.ROOT, "%d,%.4f,%d,%b,%d,%d,%d,%d,%.6e,%.6e,%.6e,%.4f,%.4f,%.4f", state.steps, state.time, step.newtonIterations,
                     step.unconvergedSteps == 0, step.lineSearchHalvings, step.factorisations, step.cgIterations, step.maxContacts, step.minGap,
-                    step.assemblyNanos * 1e-9, step.contactNanos * 1e-9, step.solveNanos * 1e-9));
+                    state.kappa, state.kappaMax, step.assemblyNanos * 1e-9, step.contactNanos * 1e-9, step.solveNanos * 1e-9));
         });
         return new Recorded(outcome, trajectory, steps);
     }
