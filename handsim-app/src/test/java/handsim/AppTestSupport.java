@@ -1,7 +1,6 @@
 package handsim;
 
 import handsim.config.Home;
-import handsim.config.Json;
 import handsim.viewer.ViewerConfig;
 
 /** Shared loading of the application's configs and scenes for tests (the hand's: {@link TestSupport}). */
@@ -20,11 +19,12 @@ public final class AppTestSupport {
      * controller and {@code object}, from the episode of {@code seed}, on {@code sim} (the scene owns it).
      */
     public static handsim.scene.CatchLoopScene heightLoopScene(handsim.sim.Simulator sim, String object, long seed) {
-        handsim.control.ControllerConfig cc = handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json"));
-        handsim.evaluation.CatchEvaluation evaluation = handsim.evaluation.CatchEvaluation.nominal(cc,
-                handsim.task.EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                handsim.task.LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                TestSupport.heightTask(handsim.task.HeightGoals.fixed(1.2)));
-        return new handsim.scene.CatchLoopScene(sim, evaluation, seed, new handsim.scene.HeightControl(0.05, 0.8, 1.7));
+        handsim.scene.HeightControl control = new handsim.scene.HeightControl(0.05, 0.8, 1.7);
+        handsim.taskdef.SteeredTask steered = TestSupport.configs().height().steered(object, handsim.task.HeightGoals.fixed(1.2),
+                control.min(), control.max());
+        handsim.spec.RunConfigs c = TestSupport.configs();
+        handsim.evaluation.CatchEvaluation evaluation = handsim.evaluation.CatchEvaluation.nominal(c.controller(), c.limits(),
+                c.launches(), c.object(object), steered.task());
+        return new handsim.scene.CatchLoopScene(sim, evaluation, steered, seed, control, null);
     }
 }

@@ -43,10 +43,14 @@ public final class TestSupport {
         return new handsim.kin.Kinematics(model()).siteFrame(model().site("palm_center"), model().poseVector("neutral")).origin();
     }
 
-    /** The shipped tasks (configs/tasks). */
-    public static handsim.task.Tasks tasks() {
-        return new handsim.task.Tasks(handsim.control.ControllerConfig.load(Home.resolve("configs/controller.json")).nominalThrows(),
-                neutralPalm(), simConfig().groundHeight());
+    private static handsim.spec.RunConfigs configs;
+
+    /** The shipped model and configs, parsed once (the tasks' definitions among them). */
+    public static synchronized handsim.spec.RunConfigs configs() {
+        if (configs == null) {
+            configs = new handsim.spec.RunConfigs(handsim.config.ConfigSet.fromFiles());
+        }
+        return configs;
     }
 
     /** Height task environments over the shipped configs, with actions mapped onto {@code space}. */
@@ -66,7 +70,7 @@ public final class TestSupport {
 
     /** The shipped height task aiming at {@code goals}, or at its config's range when null. */
     public static handsim.task.HeightTask heightTask(handsim.task.HeightGoals goals) {
-        return tasks().height(goals);
+        return configs().height().newTask(goals);
     }
 
     /** Uniform random joint angles inside the limits, shrunk by {@code margin} rad on each side. */

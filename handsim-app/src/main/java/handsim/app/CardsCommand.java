@@ -70,9 +70,7 @@ final class CardsCommand implements Runnable {
         @Override
         public Integer call() throws IOException {
             scene.checkFrameSize();
-            if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
-                throw new IllegalArgumentException("--out " + out + " is a file, not a folder");
-            }
+            new OutputPaths().heldFolder("--out", out, CardsRecording.RECORDING).check();
             CardSleight sleight = sleight(sleightName(), scene, RunOptions.keyValues(overrides));
             if (params != null && !Files.isRegularFile(params)) {
                 throw new IllegalArgumentException("--params " + params + " is not a file");

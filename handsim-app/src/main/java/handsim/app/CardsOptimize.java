@@ -2,11 +2,14 @@ package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.cards.sleight.CardSleight;
+import handsim.cards.sleight.SleightObjective;
+import handsim.cards.study.RemoteTrials;
 import handsim.cards.study.Study;
 import handsim.cards.study.StudyConfig;
 import handsim.cards.study.TrialRecord;
 import handsim.config.Home;
 import handsim.config.Json;
+import handsim.rollout.RemoteCalls;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -45,7 +48,7 @@ final class CardsOptimize implements Callable<Integer> {
     long seed;
 
     @Option(names = "--workers", paramLabel = "N", description = "trials run on N threads (default: the config's parallelTrials); "
-            + "the results are the same for any N")
+            + "the results are the same for any N, and with --master")
     Integer workers;
 
     @Option(names = "--out", paramLabel = "DIR", description = "the study folder (default: runs/cards-optimize__SLEIGHT-MESH__SEED); "
@@ -63,9 +66,12 @@ final class CardsOptimize implements Callable<Integer> {
     @Mixin
     CardsSceneOptions scene;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (the sleight's, "
-            + "materials, solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part "
-            + "of the study, so a resume needs the same")
+            + "materials, solver, budget), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted "
+            + "paths); part of the study, so a resume needs the same")
     List<String> overrides = List.of();
 
     @Spec
@@ -80,6 +86,10 @@ final class CardsOptimize implements Callable<Integer> {
             throw new IllegalArgumentException("--workers must be >= 1, got " + workers);
         }
         scene.checkFrameSize();
+        cluster.validate();
+        if (workers != null && cluster.remote()) {
+            throw new IllegalArgumentException("--workers goes without --master: the cluster's cores run the trials");
+        }
         if (!handsim.cards.sleight.Sleights.NAMES.contains(sleight)) {
             throw new IllegalArgumentException("--sleight must be one of " + String.join(", ", handsim.cards.sleight.Sleights.NAMES)
                     + ", got \"" + sleight + "\"");
@@ -92,23 +102,32 @@ final class CardsOptimize implements Callable<Integer> {
         CardSleight trial = CardsCommand.sleight(sleight, scene, RunOptions.keyValues(overrides));
         trial.checkSearchSpace(studyConfig, configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.meshName() + "__" + seed);
-        if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("--out " + dir + " is a file, not a folder");
-        }
-        int threads = workers != null ? workers : studyConfig.parallelTrials();
+        new OutputPaths().heldFolder("--out", dir, studyOutputs(studyConfig)).check();
 
         ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs());
-        Study study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
-        if (studyConfig.multiObjective()) {
-            study.displayObjectives(1000, "mm"); // Double Lift's objectives are lengths in metres
+        // a cluster is reached before the study folder is made: a master that cannot be used leaves nothing behind
+        Study study;
+        try (RemoteCalls calls = cluster.remote() ? cluster.connect("handsim cards optimize " + dir.getFileName()) : null) {
+            study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
+            if (studyConfig.multiObjective()) {
+                study.displayObjectives(1000, "mm"); // Double Lift's objectives are lengths in metres
+            }
+            System.out.printf(Locale.ROOT, "handsim cards optimize: %s, %s fingertips (%d nodes, %d free), %s cards, %s%n", trial.title(),
+                    trial.meshName(), trial.world().nodeCount(), trial.world().freeNodeCount(), trial.inputs().get("card").asText(),
+                    studyConfig.sampler().multivariate() ? "multivariate TPE" : "independent TPE");
+            if (calls != null) {
+                // each executor builds the sleight from its documents and makes its start state once for the trials it runs
+                int toRun = trials - (int) study.trials().stream().filter(t -> t.number() < trials).count();
+                try (RemoteTrials remote = new RemoteTrials(calls, SleightObjective.of(trial), studyConfig, seed, toRun)) {
+                    study.run(remote, trials, System.out);
+                }
+            } else {
+                long h0 = System.nanoTime();
+                trial.startState(trial.defaults());
+                System.out.printf(Locale.ROOT, "start (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
+                study.run(trial.objective(), trials, workers != null ? workers : studyConfig.parallelTrials(), System.out);
+            }
         }
-        System.out.printf(Locale.ROOT, "handsim cards optimize: %s, %s fingertips (%d nodes, %d free), %s cards, %s%n", trial.title(),
-                trial.meshName(), trial.world().nodeCount(), trial.world().freeNodeCount(), trial.inputs().get("card").asText(),
-                studyConfig.sampler().multivariate() ? "multivariate TPE" : "independent TPE");
-        long h0 = System.nanoTime();
-        trial.startState(trial.defaults());
-        System.out.printf(Locale.ROOT, "start (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
-        study.run(trial.objective(), trials, threads, System.out);
 
         TrialRecord chosen = study.chosen().orElse(null);
         if (chosen == null) {
@@ -122,6 +141,18 @@ final class CardsOptimize implements Callable<Integer> {
         System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history*.png" + (studyConfig.multiObjective() ? ", pareto.png" : "")
                 + ", " + CHOSEN_DIR + "/)");
         return 0;
+    }
+
+    /** What a study folder holds: study.json, best.json, the trials, the history and Pareto figures, the chosen trial's recording. */
+    static String[] studyOutputs(StudyConfig c) {
+        List<String> names = new java.util.ArrayList<>(List.of(Study.STUDY_FILE, Study.BEST_FILE, Study.TRIALS_DIR + "/", CHOSEN_DIR + "/"));
+        if (c.multiObjective()) {
+            c.objectives().forEach(name -> names.add("history-" + name + ".png"));
+            names.add("pareto.png");
+        } else {
+            names.add("history.png");
+        }
+        return names.toArray(String[]::new);
     }
 
     /** The config with independent or multivariate TPE as {@code kind} asks (null: as it is). */

@@ -76,6 +76,9 @@ final class CardsRecording {
         return o;
     }
 
+    /** What a recording folder holds ({@link #write}). */
+    static final String[] RECORDING = {"result.json", "trajectory.json", "steps.csv", "strip.png", "heights.png", "frames/"};
+
     /**
      * Writes trajectory.json and steps.csv, then (unless {@code width} is 0) frames/ and strip.png, and last
      * result.json, each atomically: a folder with result.json holds the whole recording.

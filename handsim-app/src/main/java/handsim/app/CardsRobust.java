@@ -30,13 +30,15 @@ import picocli.CommandLine.Option;
  * replays that still meet every tolerance of the study config.
  */
 @Command(name = "robust", mixinStandardHelpOptions = true,
-        description = "Replay a study's chosen trial with each parameter moved by +-1 % of its range, one at a time, and on the other "
+        description = "Replay a study's chosen trial with each parameter moved by +-1 %% of its range, one at a time, and on the other "
                 + "fingertip resolution (thesis <-> reduced, coarse -> reduced); report how many replays still meet the study's tolerances and write "
                 + "robust.json into the study folder.")
 final class CardsRobust implements Callable<Integer> {
 
     /** How far each parameter moves: a fraction of its search range. */
     static final double NUDGE = 0.01;
+
+    static final String ROBUST_FILE = "robust.json";
 
     @Option(names = "--study", required = true, paramLabel = "DIR", description = "a study folder of cards optimize")
     Path studyDir;
@@ -56,6 +58,8 @@ final class CardsRobust implements Callable<Integer> {
         if (!Files.isRegularFile(studyDir.resolve(Study.STUDY_FILE))) {
             throw new IllegalArgumentException("--study " + studyDir + " holds no " + Study.STUDY_FILE + " (is it a study folder of cards optimize?)");
         }
+        // robust.json is the one file it writes; the study folder is held, so no study or other replay writes it meanwhile
+        new OutputPaths().heldFolder("--study", studyDir, ROBUST_FILE).check();
         Study study = Study.open(studyDir);
         StudyConfig config = study.config();
         if (!config.hasTolerances()) {
@@ -90,7 +94,7 @@ final class CardsRobust implements Callable<Integer> {
         report.put("fraction", (double) met / results.size());
         ArrayNode list = report.putArray("results");
         results.forEach(list::add);
-        Outputs.writeJson(studyDir.resolve("robust.json"), report);
+        Outputs.writeJson(studyDir.resolve(ROBUST_FILE), report);
         System.out.printf(Locale.ROOT, "%d of %d replays (%.0f %%) meet every tolerance; wrote %s%n", met, results.size(), 100.0 * met / results.size(),
                 studyDir.resolve("robust.json"));
         return 0;

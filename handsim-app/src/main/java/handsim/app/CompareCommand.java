@@ -2,6 +2,7 @@ package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.taskdef.TaskDefinitions;
 import handsim.evaluation.PairedLoops;
 import handsim.report.Outputs;
 import java.nio.file.Files;
@@ -77,7 +78,7 @@ final class CompareCommand implements Callable<Integer> {
     /** The comparison in the snake_case of evaluate's JSON, with where it came from. */
     private ObjectNode toJson(PairedLoops p, Json ja) {
         ObjectNode out = Json.mapper().createObjectNode();
-        out.put("task", "flip").put("object", ja.string("object")).set("max_loops", ja.get("max_loops").node());
+        out.put("task", ja.string("task")).put("object", ja.string("object")).set("max_loops", ja.get("max_loops").node());
         out.put("a", a.toString()).put("b", b.toString());
         p.seeds().forEach(out.putArray("seeds")::add);
         out.put("mean_a", p.meanA()).put("mean_b", p.meanB()).put("mean_difference", p.meanDifference())
@@ -100,10 +101,10 @@ final class CompareCommand implements Callable<Integer> {
             throw new IllegalArgumentException(file + " is a sensitivity run (evaluate --copies): compare reads flip evaluations "
                     + "without --copies");
         }
-        if (!j.has("task") || !j.has("episodes") || !j.has("object") || !j.has("max_loops")) {
+        if (!j.has("task") || !j.has("episodes") || !j.has("object")) {
             throw new IllegalArgumentException(file + " is not the JSON of an evaluation (evaluate --json)");
         }
-        if (!j.string("task").equals("flip")) {
+        if (!j.has("max_loops") || !Wiring.shipped().task(TaskDefinitions.checkName(j.string("task"))).countsLoopsInARow()) {
             throw new IllegalArgumentException(file + " is an evaluation of the " + j.string("task") + " task: compare reads flip "
                     + "evaluations (loops in a row)");
         }

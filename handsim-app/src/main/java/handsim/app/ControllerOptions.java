@@ -1,10 +1,14 @@
 package handsim.app;
 
+import handsim.config.ConfigSet;
+import handsim.spec.RunConfigs;
+import handsim.taskdef.FlipDefinition;
+import handsim.taskdef.HeightDefinition;
+import handsim.taskdef.TaskDefinitions;
 import handsim.train.ThrowPolicyFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import handsim.config.Json;
-import handsim.task.Tasks;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import picocli.CommandLine.Option;
@@ -29,13 +33,14 @@ final class ControllerOptions {
         /** Nothing given: the shipped policies and tasks, no planner. */
         static final Choice SHIPPED = new Choice(null, null, null, false, Map.of());
 
-        /** The shipped tasks with {@link #taskSet} applied. */
-        Tasks tasks() {
-            Tasks tasks = Wiring.tasks();
-            for (Map.Entry<String, Map<String, String>> e : taskSet.entrySet()) {
-                tasks = tasks.withOverrides(e.getKey(), e.getValue());
+        /** The project's configs with {@link #taskSet} applied: the shipped ones when nothing is set. */
+        RunConfigs configs() {
+            if (taskSet.isEmpty()) {
+                return Wiring.shipped();
             }
-            return tasks;
+            Map<String, Map<String, String>> byFile = new LinkedHashMap<>();
+            taskSet.forEach((task, fields) -> byFile.put(TaskDefinitions.file(task), fields));
+            return new RunConfigs(ConfigSet.fromFiles(byFile));
         }
     }
 
@@ -73,7 +78,7 @@ final class ControllerOptions {
 
     /** --task, or height. */
     String task() {
-        return task != null ? task : "height";
+        return task != null ? task : HeightDefinition.NAME;
     }
 
     /** --controller, or nominal. */
@@ -88,8 +93,8 @@ final class ControllerOptions {
 
     /** Refuses an unknown task or controller and a policy for the nominal controller. */
     void validate() {
-        if (!List.of("height", "box", "flip").contains(task())) {
-            throw new IllegalArgumentException("--task must be height, box or flip, got " + task);
+        if (!TaskDefinitions.NAMES.contains(task())) {
+            throw new IllegalArgumentException("--task must be one of " + String.join(", ", TaskDefinitions.NAMES) + ", got " + task);
         }
         if (!List.of("nominal", "learned").contains(controller())) {
             throw new IllegalArgumentException("--controller must be nominal or learned, got " + controller);
@@ -108,13 +113,8 @@ final class ControllerOptions {
         refuseMisplaced("--opening-policy", openingPolicy);
         refuseMisplaced("--rest-policy", restPolicy);
         if (!taskSet.isEmpty()) {
-            Tasks.check(task(), taskSetFields());
+            TaskDefinitions.check(task(), TaskDefinitions.read(task(), taskSetFields()));
         }
-    }
-
-    /** {@code configs/tasks/NAME.json} as this run reads it: with --task-set applied when NAME is --task. */
-    Json taskFile(String name) {
-        return Tasks.config(name, name.equals(task()) ? taskSetFields() : Map.of());
     }
 
     /** The --task-set fields, in order (empty when none). */
@@ -122,13 +122,8 @@ final class ControllerOptions {
         return RunOptions.keyValues("--task-set", taskSet);
     }
 
-    /** The shipped tasks with --task-set applied to --task's file. */
-    Tasks tasks() {
-        return choice().tasks();
-    }
-
     private void refuseMisplaced(String option, Path file) {
-        if (file != null && (!task().equals("flip") || !controller().equals("learned"))) {
+        if (file != null && (!task().equals(FlipDefinition.NAME) || !controller().equals("learned"))) {
             throw new IllegalArgumentException(option + " goes with the flip task and --controller learned, got --task " + task()
                     + " --controller " + controller());
         }

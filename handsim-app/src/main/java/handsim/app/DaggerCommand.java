@@ -3,10 +3,9 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.Dagger;
-import handsim.model.HandModel;
 import handsim.rollout.Rollouts;
-import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
+import handsim.spec.RunConfigs;
 import handsim.train.DaggerRun;
 import handsim.train.DaggerRunConfig;
 import handsim.train.ThrowEnvFactory;
@@ -37,20 +36,32 @@ final class DaggerCommand implements Callable<Integer> {
             description = "round 0's learner: a throw policy file of the same task, object and state (default: the task's nominal throw)")
     Path initActor;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Override
     public Integer call() throws IOException {
         run.validate();
+        cluster.validate();
         if (initActor != null && run.resume != null) {
             throw new IllegalArgumentException("--init-actor starts a new run: a resumed run keeps the start saved in its folder");
         }
+        if (run.resume != null) {
+            RunFolders.hold("--resume", run.resume); // one process at a time on a run folder
+        }
         Json file = run.resume == null ? run.configFile() : null;
         DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
-        HandModel model = Wiring.model(null);
-        SimConfig simConfig = Wiring.simConfig();
-        ThrowEnvFactory envs = TrainCommand.environments(c.run(), model);
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
+        RunConfigs configs = run.resume == null ? TrainCommand.configs(c.run()) : TrainCommand.recorded(run.resume, c.run());
+        ThrowEnvFactory envs = TrainCommand.environments(c.run(), configs);
+        // a cluster is reached before the run folder is made: a master that cannot be used leaves nothing behind
+        try (Rollouts<Simulator> rollouts = cluster.remote() ? ClusterWiring.rollouts(cluster, configs, "handsim dagger " + c.run().name()
+                + " seed " + c.learner().seed()) : Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             DaggerRun dagger = run.resume != null ? DaggerRun.resume(run.resume, envs, rollouts, Wiring::twinSimulator)
                     : started(file, c, envs, rollouts);
+            TrainCommand.recordSpec(dagger.dir(), configs);
+            if (cluster.remote()) {
+                dagger.onCluster(PortableDagger.shipper(dagger.dir(), configs));
+            }
             try {
                 dagger.run(System.out);
             } catch (Dagger.TooFewLabels e) {

@@ -3,17 +3,19 @@ package handsim.app;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
+import handsim.evaluation.CatchEvaluation;
 import handsim.report.Outputs;
 import handsim.report.Plot;
+import handsim.report.Stop;
+import handsim.scene.SceneSetup;
 import handsim.sim.Simulator;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeLimits;
 import handsim.task.HeightGoals;
-import handsim.task.Tasks;
 import handsim.task.HeightTask;
 import handsim.task.LoopRecord;
-import handsim.scene.SceneSetup;
+import handsim.taskdef.FlipDefinition;
+import handsim.taskdef.HeightDefinition;
 import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -38,7 +40,8 @@ import picocli.CommandLine.Option;
                 + "or club it flips the object and catches it lying in the hand, over and over, with the shipped flip policy "
                 + "(models/policies/flip-<object>.json, the learned controller alone). "
                 + "Opens the viewer when there is a display (Esc quits); otherwise (or with --headless) runs --loops throws "
-                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder.")
+                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder (stopped by "
+                + "SIGTERM or Ctrl-C, the throws made so far, marked interrupted).")
 final class DemoCommand implements Callable<Integer> {
 
     @Mixin
@@ -65,6 +68,9 @@ final class DemoCommand implements Callable<Integer> {
             + "FILE.gltf or FILE.bvh; see export)")
     Path export;
 
+    /** What a headless demo writes into its run folder. */
+    private static final String[] RUN_FILES = {"summary.json", "loops.csv", "apex.png", "rotation.png"};
+
     /** The controller the headless run uses. */
     private String controllerShown = "nominal";
 
@@ -74,7 +80,7 @@ final class DemoCommand implements Callable<Integer> {
     }
 
     static Path shippedPolicy(String object) {
-        return ThrowPolicyFile.shipped("height", object);
+        return ThrowPolicyFile.shipped(HeightDefinition.NAME, object);
     }
 
     @Override
@@ -97,33 +103,34 @@ final class DemoCommand implements Callable<Integer> {
             }
             String flipController = FlipDemo.shippedPolicy(object) != null ? "learned" : "nominal";
             if (!headless && ViewerSession.hasDisplay()) {
-                return ViewerSession.open("demo", new SceneSetup("flip", object, flipController, seed), null,
+                return ViewerSession.open("demo", new SceneSetup(FlipDefinition.NAME, object, flipController, seed), null,
                         ControllerOptions.Choice.SHIPPED, 0, null);
             }
             if (!headless) {
                 System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
             }
             RunExport flipExport = RunExport.to(export);
-            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out)
+            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out, RUN_FILES)
                     : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
             return 0;
         }
-        HeightGoals goals = heights != null ? parseHeights(heights) : Wiring.heightTask(null).goals();
+        HeightGoals goals = heights != null ? parseHeights(heights) : height().newTask((HeightGoals) null).goals();
         String controller = bestController(object);
         RunExport exported = RunExport.to(export);
         if (!headless && ViewerSession.hasDisplay()) {
-            return ViewerSession.open("demo", new SceneSetup("height", episodeOptions.object, controller, episodeOptions.seed), goals,
+            return ViewerSession.open("demo", new SceneSetup(HeightDefinition.NAME, episodeOptions.object, controller, episodeOptions.seed), goals,
                     ControllerOptions.Choice.SHIPPED, 0, null);
         }
         if (!headless) {
             System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
         }
-        HeightTask task = Wiring.heightTask(goals);
+        HeightTask task = height().newTask(goals);
         EpisodeLimits limits = Wiring.episodeLimits();
         CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), limits, Wiring.launches(),
                 Wiring.object(episodeOptions.object), task, controller.equals("learned")
                         ? ThrowPolicyFile.load(shippedPolicy(episodeOptions.object)).forTask(task, Wiring.object(episodeOptions.object)) : obs -> task.nominalThrow());
-        Path dir = out != null ? RunFolders.claimGiven("--out", out) : RunFolders.claim(runs, "--runs", "demo", episodeOptions.object, episodeOptions.seed);
+        Path dir = out != null ? RunFolders.claimGiven("--out", out, RUN_FILES)
+                : RunFolders.claim(runs, "--runs", "demo", episodeOptions.object, episodeOptions.seed);
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
                 ? " (" + Home.root().relativize(shippedPolicy(episodeOptions.object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
@@ -146,8 +153,8 @@ final class DemoCommand implements Callable<Integer> {
         List<Long> throwSeeds = new ArrayList<>();
         int episodes = 0, firstCatchMisses = 0, failedInARow = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
-            for (long s = episodeOptions.seed; throwsMade.size() < loops; s++) {
+        try (Stop.Watch watch = Stop.watch(); Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
+            for (long s = episodeOptions.seed; throwsMade.size() < loops && !Stop.requested(); s++) {
                 if (failedInARow == limits.maxFailedThrowIns()) {
                     throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch "
                             + "(seeds " + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), "
@@ -156,7 +163,7 @@ final class DemoCommand implements Callable<Integer> {
                 episodes++;
                 boolean caughtIn = false;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
-                while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
+                while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops && !Stop.requested()) {
                     LoopRecord r = evaluation.tick(episode, s); // a divergence names the seed and loop
                     if (exported != null) {
                         exported.afterTick(sim);
@@ -180,6 +187,7 @@ final class DemoCommand implements Callable<Integer> {
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
+        Stop.check("the " + throwsMade.size() + " throws made are in " + dir.resolve("summary.json") + ", marked interrupted");
         if (exported != null) {
             exported.write("handsim demo: height task, " + episodeOptions.object + ", " + controllerShown + " controller, seed " + episodeOptions.seed);
         }
@@ -218,6 +226,9 @@ final class DemoCommand implements Callable<Integer> {
         summary.put("height_error_abs_mean_m", n > 0 ? absError / n : Double.NaN);
         summary.put("height_error_abs_max_m", maxAbsError);
         summary.put("wall_s", wall);
+        if (Stop.requested()) {
+            summary.put("interrupted", Stop.signal() + " after " + n + " of " + loops + " throws");
+        }
         Outputs.writeJson(dir.resolve("summary.json"), summary);
         Outputs.writeString(dir.resolve("loops.csv"), csv.toString());
         new Plot("Apex height per throw (" + episodeOptions.object + ", " + controllerShown + " controller)", "throw", "height (m)")
@@ -229,10 +240,15 @@ final class DemoCommand implements Callable<Integer> {
         System.out.println("wrote " + dir.resolve("summary.json") + ", loops.csv, apex.png");
     }
 
+    /** The shipped height task's definition. */
+    private static HeightDefinition height() {
+        return Wiring.shipped().height();
+    }
+
     /** {@code LOW:HIGH} in metres, for {@code --heights}. */
     static HeightGoals parseHeights(String text) {
         String[] parts = text.split(":");
-        HeightTask.Config height = Tasks.heightConfig();
+        HeightTask.Config height = height().config();
         try {
             if (parts.length == 2 && height.allowsGoal(Double.parseDouble(parts[0])) && height.allowsGoal(Double.parseDouble(parts[1]))) {
                 return new HeightGoals(Double.parseDouble(parts[0]), Double.parseDouble(parts[1]));

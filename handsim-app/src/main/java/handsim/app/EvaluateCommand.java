@@ -1,33 +1,20 @@
 package handsim.app;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.config.Home;
-import handsim.control.ThrowPolicy;
 import handsim.evaluation.EpisodeJournal;
-import handsim.evaluation.EvaluationConfig;
 import handsim.evaluation.EvaluationRequest;
 import handsim.evaluation.EvaluationSetup;
-import handsim.evaluation.GoalsFile;
 import handsim.evaluation.TaskEvaluation;
 import handsim.report.Outputs;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
-import handsim.sim.ObjectSpec;
-import handsim.task.FlipTask;
-import handsim.task.HeightTask;
-import handsim.task.StateVector;
-import handsim.task.Tasks;
-import handsim.task.ThrowTask;
-import handsim.train.ThrowPolicyFile;
-import java.io.IOException;
-import java.nio.file.Files;
+import handsim.sim.Simulator;
+import handsim.spec.RunConfigs;
+import handsim.taskdef.TaskDefinition;
 import java.nio.file.Path;
-import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.Callable;
-import java.util.function.Function;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -106,77 +93,50 @@ final class EvaluateCommand implements Callable<Integer> {
                     + "with .png)")
     Path plot;
 
+    @Option(names = "--spec", paramLabel = "FILE", description = "repeat a recorded run: the spec of an evaluate JSON (or a spec "
+            + "file alone), with its options, configuration, goals and policies as recorded; only --json, --csv, --plot, --workers and "
+            + "--export go with it")
+    Path specFile;
+
     @Option(names = "--export", paramLabel = "FILE",
             description = "with --episodes 1 (box: --tests 1): also write the episode's animation (FILE.glb, FILE.gltf or FILE.bvh; see export)")
     Path export;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Spec
     CommandSpec spec;
 
-    /** --loops, or the task's default. */
-    private int loops;
-    private String task;
-    private String controller;
-    private String object;
-    private EvaluationConfig config;
-    /** The shipped tasks with --task-set applied. */
-    private Tasks tasks;
-    private HeightTask.Config height;
-    /** The episode's animation export, or null. */
-    private RunExport exported;
+    /** The options a recorded run's spec decides: refused beside --spec. */
+    private static final List<String> RECORDED = List.of("--task", "--controller", "--object", "--seed", "--policy", "--opening-policy",
+            "--rest-policy", "--plan", "--task-set", "--loops", "--episodes", "--tests", "--throw-height", "--goals", "--copies", "--nudge");
 
     @Override
     public Integer call() throws Exception {
         String commit = Provenance.gitCommit(); // the code this run begins with
-        task = who.task();
-        controller = who.controller();
-        object = episodeOptions.object;
-        config = EvaluationConfig.load(Home.resolve("configs/evaluation.json"));
-        height = HeightTask.Config.parse(who.taskFile("height"));
-        loops = loopsOption != null ? loopsOption : copies != null ? config.sensitivityThrows()
-                : task.equals("flip") ? FlipTask.Config.parse(who.taskFile("flip")).evaluationLoops() : height.evaluationThrows();
-        tasks = who.tasks();
-        tasks.create(task, object); // a bad --task-set, or an object the task cannot take, fails here, before any file is written
-        validate();
-        EpisodeJournal journal = null;
-        if (json != null) {
-            journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature(), commit);
-            if (journal.finished() > 0) {
-                System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
-                        journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
-            }
-        }
+        EvaluateSpec run = resolve();
+        RunExport exported = validate(run);
+        RunConfigs configs = run.configs();
+        EvaluationRequest request = run.request(csv, plot, exported != null);
+        TaskDefinition definition = run.definition();
+        definition.check(request); // options the task does not take, a bad goals file: refused before anything is written
+        EvaluationSetup setup = run.setup(exported, System.out);
+        configs.model(); // the engine's documents too: every document read before the journal records them
+        configs.sim();
+        ObjectNode record = run.toJson();
+        // a cluster is reached before the journal is made: a master that cannot be used leaves nothing behind
+        Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.evaluation(cluster, run) : null;
+        EpisodeJournal journal = json == null ? null : ClusterWiring.closingOnFailure(remote, () -> openJournal(record, commit));
         long t0 = System.nanoTime();
-        ObjectNode out = JsonNodeFactory.instance.objectNode();
-        out.put("task", task);
-        out.put("controller", controller);
-        out.put("planned", who.plan);
-        if (who.policy != null || controller.equals("learned")) {
-            out.put("policy", who.policyFile(object).toString());
-            Path opening = who.openingFile(object);
-            out.put("opening_policy", opening != null ? opening.toString() : null);
-            Path rest = who.restFile(object);
-            out.put("rest_policy", rest != null ? rest.toString() : null);
-        }
-        out.put("object", object);
-        if (!who.taskSet.isEmpty()) {
-            out.set("task_set", taskSet());
-        }
-        out.put("seed", episodeOptions.seed);
-        out.put("workers", workers);
-        EvaluationRequest request = new EvaluationRequest(task, object, controller, who.plan, episodeOptions.seed, loops, episodes, tests,
-                throwHeight, goals != null && !task.equals("box") ? GoalsFile.heights(goals, height) : null,
-                goals != null && task.equals("box") ? GoalsFile.boxes(goals) : null, copies, nudge, csv, plot);
-        EvaluationSetup setup = new EvaluationSetup(Wiring.controllerConfig(), Wiring.object(object), tasks,
-                Wiring.episodeLimits(), Wiring.launches(), config, throwPolicies(), who.plan ? Wiring.plannerConfig(object) : null,
-                Wiring::twinSimulator, exported, journal, System.out);
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(Wiring.model(null), Wiring.simConfig(), workers)) {
-            TaskEvaluation.of(request, setup).run(rollouts, out);
+        ObjectNode out = summaryHead(run);
+        try (Rollouts<Simulator> rollouts = remote != null ? remote : Wiring.rollouts(configs.model(), configs.sim(), workers)) {
+            definition.evaluation(request, withJournal(setup, journal)).run(rollouts, out);
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
         if (exported != null) {
-            exported.write("handsim evaluate: " + task + " task, " + object + ", " + request.controllerLabel() + " controller, seed "
-                    + episodeOptions.seed);
+            exported.write("handsim evaluate: " + run.task() + " task, " + run.object() + ", " + request.controllerLabel()
+                    + " controller, seed " + run.seed());
         }
         if (journal != null) {
             out.put("episodes_resumed", journal.resumed());
@@ -187,6 +147,7 @@ final class EvaluateCommand implements Callable<Integer> {
             journal.episodesByCommit().forEach(provenance.putObject("episodes_by_commit")::put);
         }
         out.set("provenance", provenance);
+        out.set("spec", run.toJson());
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);
@@ -195,112 +156,112 @@ final class EvaluateCommand implements Callable<Integer> {
         return 0;
     }
 
-    /**
-     * What makes this run's episodes what they are: the options that change a result (--task-set
-     * among them; not --workers, --episodes or --tests: more episodes of the same run keep the
-     * first ones) and the SHA-256 of every file under configs/ and models/ and of --policy and
-     * --goals.
-     */
-    private ObjectNode signature() throws IOException {
-        ObjectNode s = JsonNodeFactory.instance.objectNode();
-        s.put("task", task).put("controller", controller).put("plan", who.plan).put("object", object).put("loops", loops)
-                .put("seed", episodeOptions.seed);
-        Path policy = controller.equals("learned") ? who.policyFile(object) : null;
-        s.put("policy", policy != null ? policy.toAbsolutePath().normalize().toString() : null);
-        Path opening = who.openingFile(object); // null for the nominal controller
-        s.put("opening_policy", opening != null ? opening.toAbsolutePath().normalize().toString() : null);
-        Path rest = who.restFile(object); // null for the nominal controller
-        if (rest != null) { // absent when none: a run without one keeps the signature it had without the option
-            s.put("rest_policy", rest.toAbsolutePath().normalize().toString());
+    /** The run asked for: the spec of --spec, or the one the options give. */
+    private EvaluateSpec resolve() {
+        if (specFile == null) {
+            who.validate();
+            return EvaluateSpec.of(who, episodeOptions.object, episodeOptions.seed, loopsOption, episodes, tests, throwHeight, goals,
+                    copies, nudge);
         }
-        if (!who.taskSet.isEmpty()) { // absent when none, as rest_policy
-            s.set("task_set", taskSet());
+        for (String option : RECORDED) {
+            if (spec.commandLine().getParseResult().hasMatchedOption(option)) {
+                throw new IllegalArgumentException(option + " goes without --spec: the recorded run decides it");
+            }
         }
-        s.put("throw_height", throwHeight);
-        s.put("copies", copies);
-        s.put("nudge", copies != null ? nudge : null);
-        ObjectNode files = s.putObject("files");
-        EpisodeJournal.inputHashes(Arrays.asList(policy, opening, rest, goals)).forEach(files::put);
-        return s;
+        return EvaluateSpec.read(specFile);
     }
 
-    private void validate() {
-        who.validate();
-        if (loops < 0 || loops > 100000) {
-            throw new IllegalArgumentException("--loops must be in [0, 100000], got " + loops);
+    /** The summary's first fields: what was run. */
+    private ObjectNode summaryHead(EvaluateSpec run) {
+        ObjectNode out = JsonNodeFactory.instance.objectNode();
+        out.put("task", run.task());
+        out.put("controller", run.controller());
+        out.put("planned", run.plan());
+        if (run.policies().containsKey("policy")) {
+            out.put("policy", run.policies().get("policy").toString());
+            Path opening = run.policies().get("opening_policy");
+            out.put("opening_policy", opening != null ? opening.toString() : null);
+            Path rest = run.policies().get("rest_policy");
+            out.put("rest_policy", rest != null ? rest.toString() : null);
         }
-        if (episodes < 1 || episodes > 100000) {
-            throw new IllegalArgumentException("--episodes must be in [1, 100000], got " + episodes);
+        out.put("object", run.object());
+        out.set("controller_parts", run.controllerParts());
+        if (!run.taskSet().isEmpty()) {
+            out.set("task_set", run.toTaskSetJson());
         }
-        if (tests < 1 || tests > 100000) {
-            throw new IllegalArgumentException("--tests must be in [1, 100000], got " + tests);
+        out.put("seed", run.seed());
+        out.put("workers", workers); // null on a cluster
+        return out;
+    }
+
+    /**
+     * The journal of --json: the run's episodes already finished by the same command, killed. What
+     * makes the episodes what they are signs it: the spec, but for the episode and test counts
+     * (more episodes of the same run keep the first ones).
+     */
+    private EpisodeJournal openJournal(ObjectNode record, String commit) {
+        ObjectNode signature = record.deepCopy();
+        signature.remove(List.of("episodes", "tests"));
+        EpisodeJournal journal = EpisodeJournal.open(journalFile(), signature, commit);
+        StopRecords.evaluation(json, journal, spec.commandLine().getParseResult().originalArgs(), commit);
+        if (journal.finished() > 0) {
+            System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
+                    journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
         }
-        if (throwHeight != null && !height.allowsGoal(throwHeight)) {
-            throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
+        return journal;
+    }
+
+    /** Where --json's finished episodes are kept while the run goes: FILE.episodes.jsonl. */
+    private Path journalFile() {
+        return json.resolveSibling(json.getFileName() + ".episodes.jsonl");
+    }
+
+    private static EvaluationSetup withJournal(EvaluationSetup s, EpisodeJournal journal) {
+        return new EvaluationSetup(s.controller(), s.object(), s.limits(), s.launches(), s.config(), s.policies(), s.planning(),
+                s.twins(), s.watcher(), journal, s.console());
+    }
+
+    /** Refuses counts out of range and outputs that cannot be written; the animation export asked for, or null. */
+    private RunExport validate(EvaluateSpec run) {
+        checkRange("--loops", run.loops(), 0);
+        checkRange("--episodes", run.episodes(), 1);
+        checkRange("--tests", run.tests(), 1);
+        if (run.copies() != null && (run.copies() < 2 || run.copies() > 1000)) {
+            throw new IllegalArgumentException("--copies must be in [2, 1000], got " + run.copies());
         }
-        if (throwHeight != null && (goals != null || task.equals("box"))) {
-            throw new IllegalArgumentException("--throw-height goes with the height task and without --goals");
-        }
-        if (copies != null && (copies < 2 || copies > 1000 || task.equals("box"))) {
-            throw new IllegalArgumentException("--copies must be in [2, 1000] and goes with the height or flip task, got " + copies
-                    + " with " + task);
-        }
-        if (copies != null && csv != null) {
+        if (run.copies() != null && csv != null) {
             throw new IllegalArgumentException("--csv goes without --copies (a sensitivity run writes its figures with --json)");
         }
-        if (who.plan && (!task.equals("flip") || copies != null)) {
-            throw new IllegalArgumentException("--plan goes with the flip task and without --copies");
+        if (!(run.nudge() > 0 && run.nudge() <= 1)) {
+            throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + run.nudge());
         }
-        if (!(nudge > 0 && nudge <= 1)) {
-            throw new IllegalArgumentException("--nudge must be in (0, 1] m/s, got " + nudge);
+        cluster.validate();
+        if (cluster.remote() && (workers != null || export != null)) {
+            throw new IllegalArgumentException((workers != null ? "--workers" : "--export") + " goes without --master: "
+                    + (workers != null ? "the cluster's cores run the episodes" : "an animation is of one episode, run here"));
         }
-        if (goals != null && !Files.isRegularFile(goals)) {
-            throw new IllegalArgumentException("--goals: no file " + goals);
-        }
-        if (workers == null) {
+        if (workers == null && !cluster.remote()) {
             workers = LocalRollouts.localCores();
         }
-        if (workers < 1 || workers > 256) {
+        if (workers != null && (workers < 1 || workers > 256)) {
             throw new IllegalArgumentException("--workers must be in [1, 256], got " + workers);
         }
-        if (export != null && (episodes != 1 || copies != null || task.equals("box") && tests != 1)) {
-            throw new IllegalArgumentException("--export goes with one episode: --episodes 1 (box: --tests 1), without --copies");
-        }
-        exported = RunExport.to(export);
         if (plot == null && json != null) {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
-        new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
+        if (specFile != null) { // the policies of a recorded run are named by no option
+            run.policies().forEach((role, file) -> OutputPaths.input(file, "the " + role.replace('_', ' ') + " recorded in --spec "
+                    + specFile));
+        }
+        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : journalFile()).file("--csv", csv)
+                .file("--plot", plot).check();
+        return RunExport.to(export);
     }
 
-    /** The --task-set fields, in order. */
-    private ObjectNode taskSet() {
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        who.taskSetFields().forEach(o::put);
-        return o;
-    }
-
-    /** How each worker's task gets its throw policy: the task's nominal throw, or the learned policy (and its opening). */
-    private Function<ThrowTask, ThrowPolicy> throwPolicies() {
-        if (controller.equals("nominal")) {
-            return t -> obs -> t.nominalThrow();
+    private static void checkRange(String option, int value, int low) {
+        if (value < low || value > 100000) {
+            throw new IllegalArgumentException(option + " must be in [" + low + ", 100000], got " + value);
         }
-        Path file = who.policyFile(object);
-        if (!Files.isRegularFile(file)) {
-            throw new IllegalArgumentException(who.policy != null ? "--policy: no file " + file
-                    : "no shipped policy for the " + task + " task with a " + object + " (" + Home.root().relativize(file)
-                            + "): train one (scripts/handsim train) and give it with --policy");
-        }
-        Path opening = who.openingFile(object); // given: checked to exist by who.validate()
-        ObjectSpec spec = Wiring.object(object);
-        StateVector.Hand hand = StateVector.Hand.of(Wiring.model(null));
-        // each file read once, each worker's task given its own policy
-        ThrowPolicyFile loaded = ThrowPolicyFile.load(file);
-        ThrowPolicyFile loadedOpening = opening == null ? null : ThrowPolicyFile.loadOpening(opening);
-        Path rest = who.restFile(object);
-        ThrowPolicyFile loadedRest = rest == null ? null : ThrowPolicyFile.loadRest(rest);
-        ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, tasks.create(task, object), spec, hand); // a policy for another task or object fails here
-        return t -> ThrowPolicyFile.throwPolicy(loaded, loadedOpening, opening, loadedRest, rest, t, spec, hand);
     }
 }

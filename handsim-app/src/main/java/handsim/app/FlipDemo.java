@@ -4,15 +4,18 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
 import handsim.control.ThrowPolicy;
+import handsim.evaluation.CatchEvaluation;
+import handsim.evaluation.FlipReport;
 import handsim.report.Outputs;
 import handsim.report.Plot;
+import handsim.report.Stop;
 import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.FlipTask;
 import handsim.task.LoopRecord;
 import handsim.task.StateVector;
+import handsim.taskdef.FlipDefinition;
 import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -27,7 +30,8 @@ import java.util.Locale;
  * learned controller alone) or, when none ships for the object, the nominal flip. Each throw is
  * printed with its turn in flight and how it ended; a throw that fails only breaks the count of
  * loops in a row, a drop starts the next episode (seed + 1). Writes summary.json, loops.csv and a
- * picture of each throw's turn to the run folder.
+ * picture of each throw's turn to the run folder; stopped by a signal, it writes the throws made
+ * so far, marked interrupted.
  */
 final class FlipDemo {
 
@@ -44,7 +48,7 @@ final class FlipDemo {
     /** The objects the demo flips: those the flip task has settings for. */
     static boolean flips(String object) {
         try {
-            Wiring.tasks().create("flip", object);
+            flipDefinition().newTask(object);
             return true;
         } catch (IllegalArgumentException e) {
             return false;
@@ -53,17 +57,17 @@ final class FlipDemo {
 
     /** The shipped flip policy of {@code object}, or null when none ships (the nominal flip then throws). */
     static Path shippedPolicy(String object) {
-        Path file = ThrowPolicyFile.shipped("flip", object);
+        Path file = ThrowPolicyFile.shipped(FlipDefinition.NAME, object);
         return Files.isRegularFile(file) ? file : null;
     }
 
     /** Runs the throws, printing each, and writes the run folder {@code dir}; {@code exported} (or null) watches every tick. */
     void run(Path dir, RunExport exported) throws IOException {
-        FlipTask task = (FlipTask) Wiring.tasks().create("flip", object);
+        FlipTask task = flipDefinition().newTask(object);
         ObjectSpec spec = Wiring.object(object);
         Path policy = shippedPolicy(object);
-        Path opening = policy == null ? null : ThrowPolicyFile.shippedOpening("flip", object);
-        Path rest = policy == null ? null : ThrowPolicyFile.shippedRest("flip", object);
+        Path opening = policy == null ? null : ThrowPolicyFile.shippedOpening(FlipDefinition.NAME, object);
+        Path rest = policy == null ? null : ThrowPolicyFile.shippedRest(FlipDefinition.NAME, object);
         ThrowPolicy throwing = policy == null ? obs -> task.nominalThrow()
                 : ThrowPolicyFile.throwPolicy(policy, opening, rest, task, spec, StateVector.Hand.of(Wiring.model(null)));
         String controller = policy == null ? "nominal" : "learned";
@@ -77,11 +81,11 @@ final class FlipDemo {
         List<Long> seeds = new ArrayList<>();
         int episodes = 0, inARow = 0, longest = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
-            for (long s = seed; made.size() < throwsWanted; s++) {
+        try (Stop.Watch watch = Stop.watch(); Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
+            for (long s = seed; made.size() < throwsWanted && !Stop.requested(); s++) {
                 episodes++;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
-                while (episode.status() == CatchThrowEpisode.Status.RUNNING && made.size() < throwsWanted) {
+                while (episode.status() == CatchThrowEpisode.Status.RUNNING && made.size() < throwsWanted && !Stop.requested()) {
                     LoopRecord r = evaluation.tick(episode, s);
                     if (exported != null) {
                         exported.afterTick(sim);
@@ -105,6 +109,7 @@ final class FlipDemo {
             }
         }
         write(dir, task, controller, policy, made, seeds, episodes, longest, (System.nanoTime() - t0) / 1e9);
+        Stop.check("the " + made.size() + " throws made are in " + dir.resolve("summary.json") + ", marked interrupted");
         if (exported != null) {
             exported.write("handsim demo: flip task, " + object + ", " + controller + " controller, seed " + seed);
         }
@@ -112,10 +117,10 @@ final class FlipDemo {
 
     private void write(Path dir, FlipTask task, String controller, Path policy, List<LoopRecord> made, List<Long> seeds, int episodes,
             int longest, double wall) throws IOException {
-        FlipTask.ThrowTally tally = task.tally(made);
+        FlipReport.ThrowTally tally = new FlipReport(task, Wiring.shipped().evaluation().flipBins()).tally(made);
         ObjectNode summary = JsonNodeFactory.instance.objectNode();
         summary.put("command", "demo");
-        summary.put("task", "flip");
+        summary.put("task", FlipDefinition.NAME);
         summary.put("controller", controller);
         summary.put("policy", policy == null ? null : Home.root().relativize(policy).toString());
         summary.put("object", object);
@@ -129,6 +134,9 @@ final class FlipDemo {
         }
         summary.put("episodes", episodes);
         summary.put("wall_s", wall);
+        if (Stop.requested()) {
+            summary.put("interrupted", Stop.signal() + " after " + made.size() + " of " + throwsWanted + " throws");
+        }
         StringBuilder csv = new StringBuilder("throw,episode_seed,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,catch_tilt_deg,"
                 + "catch_heading_deg,success,failure\n");
         int n = made.size();
@@ -157,5 +165,10 @@ final class FlipDemo {
         System.out.printf(Locale.ROOT, "%d throws: %d flipped and caught lying in the hand (%.1f %%), at most %d in a row (%d episodes); "
                 + "%.0f s%n", n, tally.successes(), 100 * tally.successRate(), longest, episodes, wall);
         System.out.println("wrote " + dir.resolve("summary.json") + ", loops.csv, rotation.png");
+    }
+
+    /** The shipped flip task's definition. */
+    private static FlipDefinition flipDefinition() {
+        return Wiring.shipped().flip();
     }
 }

@@ -1,6 +1,5 @@
 package handsim.app;
 
-import handsim.report.Outputs;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -14,6 +13,7 @@ import handsim.model.HandModel;
 import handsim.model.Joint;
 import handsim.model.ModelLoader;
 import handsim.model.Shape;
+import handsim.report.Outputs;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.concurrent.Callable;

@@ -1,7 +1,7 @@
 package handsim.app;
 
-import handsim.task.Goal;
 import handsim.scene.Scene;
+import handsim.task.Goal;
 import handsim.viewer.Camera;
 import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;

@@ -1,7 +1,6 @@
 package handsim.app;
 
 import handsim.model.HandModel;
-import handsim.task.HeldBallScenario;
 import handsim.scene.HeldBallScene;
 import handsim.scene.InteractiveScene;
 import handsim.scene.Scene;
@@ -11,6 +10,7 @@ import handsim.sim.Simulator;
 import handsim.task.Goal;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
+import handsim.task.HeldBallScenario;
 import handsim.task.ServoLoop;
 import handsim.viewer.ViewerConfig;
 import picocli.CommandLine.Mixin;
@@ -46,7 +46,7 @@ final class SceneOptions {
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
         }
-        HeightTask.Config height = HeightTask.Config.parse(who.taskFile("height"));
+        HeightTask.Config height = who.choice().configs().height().config();
         if (!height.allowsGoal(throwHeight)) {
             throw new IllegalArgumentException("--throw-height must be in " + height.goalLimits() + ", got " + throwHeight);
         }

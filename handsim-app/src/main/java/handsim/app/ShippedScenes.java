@@ -1,22 +1,23 @@
 package handsim.app;
 
-import handsim.config.Home;
-import handsim.model.HandModel;
-import handsim.sim.SimConfig;
-import handsim.sim.Simulator;
 import handsim.config.ConfigException;
+import handsim.config.Home;
 import handsim.control.ThrowPolicy;
 import handsim.evaluation.CatchEvaluation;
 import handsim.scene.CatchLoopScene;
-import handsim.task.StateVector;
-import handsim.task.Tasks;
-import handsim.task.ThrowTask;
-import handsim.train.ThrowPolicyFile;
 import handsim.scene.HeightControl;
-import handsim.task.HeightGoals;
 import handsim.scene.InteractiveScene;
 import handsim.scene.SceneCatalog;
 import handsim.scene.SceneSetup;
+import handsim.sim.Simulator;
+import handsim.spec.RunConfigs;
+import handsim.task.HeightGoals;
+import handsim.task.StateVector;
+import handsim.task.ThrowTask;
+import handsim.taskdef.HeightDefinition;
+import handsim.taskdef.SteeredTask;
+import handsim.taskdef.TaskDefinitions;
+import handsim.train.ThrowPolicyFile;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -26,26 +27,24 @@ import java.util.List;
 import java.util.stream.Stream;
 
 /**
- * The scenes this build of handsim can show: the tasks of {@link Tasks} (height, box) with the
+ * The scenes this build of handsim can show: the tasks of {@link TaskDefinitions} with the
  * nominal controller or a learned one, for every object in {@code configs/objects/}. The learned
  * controller plays {@code --policy} or the policy shipped for the task and object
  * ({@code models/policies/<task>-<object>.json}); without one, or for a task not built yet, the
  * scene falls back (to nominal, to the height task) with a note.
  *
- * <p>To plug in a task: add it to {@link Tasks}; the scene is the same {@link CatchLoopScene}.
+ * <p>To plug in a task: add it to {@link TaskDefinitions}; the scene is the same {@link CatchLoopScene}.
  */
 final class ShippedScenes implements SceneCatalog {
 
-    static final List<String> TASKS = List.of("height", "box", "flip");
     static final List<String> CONTROLLERS = List.of("nominal", "learned");
 
-    private final HandModel model = Wiring.model(null);
-    private final SimConfig simConfig = Wiring.simConfig();
+
     private final HeightGoals goals;
     private final HeightControl heightControl;
     private final ControllerOptions.Choice who;
-    /** The tasks with the fields {@code who} changed. */
-    private final Tasks tasks;
+    /** The project's configs with the fields of the tasks' files {@code who} changed. */
+    private final RunConfigs configs;
     private final List<String> objects;
 
     /**
@@ -58,7 +57,7 @@ final class ShippedScenes implements SceneCatalog {
         this.goals = goals;
         this.heightControl = heightControl;
         this.who = who;
-        this.tasks = who.tasks();
+        this.configs = who.configs();
         this.objects = listObjects();
     }
 
@@ -82,7 +81,7 @@ final class ShippedScenes implements SceneCatalog {
      * options, {@link ControllerOptions#validateFlipPolicies}).
      */
     void validate(SceneSetup s) {
-        check("--task", s.task(), TASKS);
+        check("--task", s.task(), TaskDefinitions.NAMES);
         check("--object", s.object(), objects);
         check("--controller", s.controller(), CONTROLLERS);
         if (who.policy() != null && !Files.isRegularFile(who.policy())) { // a typo, not a policy that does not fit: refused
@@ -98,7 +97,7 @@ final class ShippedScenes implements SceneCatalog {
 
     @Override
     public List<String> tasks() {
-        return TASKS;
+        return TaskDefinitions.NAMES;
     }
 
     @Override
@@ -115,18 +114,19 @@ final class ShippedScenes implements SceneCatalog {
     public Opened open(SceneSetup wanted) {
         List<String> notes = new ArrayList<>();
         SceneSetup shown = wanted;
-        if (!Tasks.NAMES.contains(wanted.task())) {
+        if (!TaskDefinitions.NAMES.contains(wanted.task())) {
             notes.add("the " + wanted.task() + " task is not built yet: showing the height task");
-            shown = shown.withTask("height");
+            shown = shown.withTask(HeightDefinition.NAME);
         }
-        ThrowTask task;
+        SteeredTask steered;
         try {
-            task = shown.task().equals("height") ? tasks.height(goals) : tasks.create(shown.task(), shown.object());
+            steered = configs.task(shown.task()).steered(shown.object(), goals, heightControl.min(), heightControl.max());
         } catch (IllegalArgumentException | ConfigException e) {
             notes.add(e.getMessage() + ": showing the height task");
-            shown = shown.withTask("height");
-            task = tasks.height(goals);
+            shown = shown.withTask(HeightDefinition.NAME);
+            steered = configs.height().steered(shown.object(), goals, heightControl.min(), heightControl.max());
         }
+        ThrowTask task = steered.task();
         ThrowTask chosen = task;
         ThrowPolicy throwPolicy = obs -> chosen.nominalThrow();
         if (shown.controller().equals("learned")) {
@@ -137,17 +137,17 @@ final class ShippedScenes implements SceneCatalog {
                 shown = shown.withController("nominal");
             }
         }
-        CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(),
-                Wiring.object(shown.object()), task, throwPolicy);
-        Simulator sim = Wiring.simulator(model, simConfig);
+        CatchEvaluation evaluation = new CatchEvaluation(configs.controller(), configs.limits(), configs.launches(),
+                configs.object(shown.object()), task, throwPolicy);
+        Simulator sim = Wiring.simulator(configs.model(), configs.sim());
         Simulator twin = null;
         if (who.plan() && task.goalSize() != 0) {
             notes.add("the throw planner chooses the flip task's throws only: the " + task.name() + " task's are not planned");
         } else if (who.plan()) {
             twin = Wiring.twinSimulator(sim);
-            evaluation = evaluation.planned(Wiring.plannerConfig(shown.object()), twin);
+            evaluation = evaluation.planned(configs.planner(shown.object()), twin);
         }
-        InteractiveScene scene = new CatchLoopScene(sim, evaluation, shown.seed(), heightControl, twin);
+        InteractiveScene scene = new CatchLoopScene(sim, evaluation, steered, shown.seed(), heightControl, twin);
         return new Opened(scene, shown, notes);
     }
 
@@ -175,7 +175,7 @@ final class ShippedScenes implements SceneCatalog {
             throw new IllegalArgumentException("learned policy " + file + " does not exist");
         }
         try {
-            return ThrowPolicyFile.throwPolicy(file, opening, rest, task, Wiring.object(setup.object()), StateVector.Hand.of(Wiring.model(null)));
+            return ThrowPolicyFile.throwPolicy(file, opening, rest, task, configs.object(setup.object()), StateVector.Hand.of(configs.model()));
         } catch (ConfigException e) {
             throw new IllegalArgumentException("learned policy " + file + " cannot be read (" + e.getMessage() + ")", e);
         }

@@ -1,17 +1,18 @@
 package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.config.ConfigSet;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
-import handsim.model.HandModel;
+import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
-import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
-import handsim.task.FlipTask;
+import handsim.spec.RunConfigs;
 import handsim.task.StateVector;
-import handsim.task.Tasks;
 import handsim.task.ThrowTask;
+import handsim.taskdef.TaskDefinition;
+import handsim.taskdef.TaskDefinitions;
 import handsim.train.ThrowEnv;
 import handsim.train.ThrowEnvFactory;
 import handsim.train.TrainConfig;
@@ -20,8 +21,8 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
+import java.util.Map;
 import java.util.concurrent.Callable;
-import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -82,12 +83,15 @@ final class TrainCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
                     + "with --set training.episodes=N");
         }
+        if (run.resume != null) {
+            RunFolders.hold("--resume", run.resume); // one process at a time on a run folder
+        }
         TrainConfig c = run.resume == null ? TrainConfig.parse(run.configFile()) : TrainRun.savedConfig(run.resume);
-        HandModel model = Wiring.model(null);
-        SimConfig simConfig = Wiring.simConfig();
-        ThrowEnvFactory envs = environments(c.run(), model);
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, simConfig, c.run().workers())) {
+        RunConfigs configs = run.resume == null ? configs(c.run()) : recorded(run.resume, c.run());
+        ThrowEnvFactory envs = environments(c.run(), configs);
+        try (Rollouts<Simulator> rollouts = Wiring.rollouts(configs.model(), configs.sim(), c.run().workers())) {
             TrainRun training = run.resume != null ? resumed(envs, rollouts) : started(c, envs, rollouts);
+            recordSpec(training.dir(), configs);
             tellLauncher(training.dir());
             training.run(System.out, sessionEpisodes != null ? sessionEpisodes : Long.MAX_VALUE);
         }
@@ -98,34 +102,48 @@ final class TrainCommand implements Callable<Integer> {
     private static void tellLauncher(Path dir) throws IOException {
         String file = System.getProperty(RUN_DIR_FILE_PROPERTY);
         if (file != null) {
-            Files.writeString(Path.of(file), dir.toAbsolutePath().toString());
+            Outputs.writeString(Path.of(file), dir.toAbsolutePath().toString());
         }
+    }
+
+    /** Where a run folder records the configuration documents its run read ({@link ConfigSet#toJson}). */
+    static final String SPEC = "spec.json";
+
+    /**
+     * The configs of the run in {@code dir}: the documents its folder records ({@link #SPEC}), so
+     * that a resumed run plays in the world it began in; the project's files for a folder without
+     * the record.
+     */
+    static RunConfigs recorded(Path dir, TrainConfig.Run run) {
+        Path spec = dir.resolve(SPEC);
+        return Files.isRegularFile(spec) ? new RunConfigs(ConfigSet.replaying(Json.load(spec))) : configs(run);
     }
 
     /**
-     * The environments of a run: its task and object with the shipped controller, launch and
-     * episode configs; a flip run may catch as its config says ({@link TrainConfig.Run#catchAfterThrow}) and
-     * leave out the object's arm rest ({@link TrainConfig.Run#armRest}).
+     * Records in {@code dir} every configuration document the run has read; a run that replays
+     * its folder's record ({@link #recorded}) leaves it as it is, since it is this run's input.
      */
-    static ThrowEnvFactory environments(TrainConfig.Run run, HandModel model) {
-        Tasks tasks = Wiring.tasks();
-        ThrowTask probe = tasks.create(run.task(), run.object()); // an unknown task (or an object it cannot take) fails here
-        ControllerConfig cc = Wiring.controllerConfig();
-        ObjectSpec object = Wiring.object(run.object());
-        Supplier<ThrowTask> task = () -> asRun(run, tasks.create(run.task(), run.object()));
-        return new ThrowEnvFactory(run.task(), object, task, cc,
-                Wiring.episodeLimits(), Wiring.launches(), probe.throwSpace(cc.throwSpace()),
-                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
-                new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(model)));
+    static void recordSpec(Path dir, RunConfigs configs) throws IOException {
+        if (!configs.files().replays()) {
+            Outputs.writeJson(dir.resolve(SPEC), configs.files().toJson());
+        }
     }
 
-    /** {@code task} with the catch and the arm rest that a flip run's config sets. */
-    private static ThrowTask asRun(TrainConfig.Run run, ThrowTask task) {
-        if (!(task instanceof FlipTask flip)) {
-            return task;
-        }
-        FlipTask caught = run.catchAfterThrow() == null ? flip : flip.catchingAs(run.catchAfterThrow());
-        return run.armRest() ? caught : caught.withoutArmRest();
+    /** The project's configs with the fields of the task's file that the run changes ({@link TrainConfig.Run#taskSet}). */
+    static RunConfigs configs(TrainConfig.Run run) {
+        return new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file(run.task()), run.taskSet())));
+    }
+
+    /** The environments of a run: its task (as {@code configs} define it) and object with the controller, launch and episode configs. */
+    static ThrowEnvFactory environments(TrainConfig.Run run, RunConfigs configs) {
+        TaskDefinition task = configs.task(run.task());
+        ThrowTask probe = task.newTask(run.object()); // an object the task cannot take fails here
+        ControllerConfig cc = configs.controller();
+        ObjectSpec object = configs.object(run.object());
+        return new ThrowEnvFactory(run.task(), object, () -> task.newTask(run.object()), cc, configs.limits(), configs.launches(),
+                probe.throwSpace(cc.throwSpace()),
+                new ThrowEnv.Settings(run.firstCatchAttempts(), run.divergedReward(), run.spinShaping(), run.endAtFailedThrow()),
+                new StateVector(run.state(), object.longAxis(), StateVector.Hand.of(configs.model())));
     }
 
     /** A new run in a folder of its own (given up again if the run cannot start). */

@@ -1,7 +1,7 @@
 package handsim.app;
 
-import handsim.task.HeightGoals;
 import handsim.scene.SceneSetup;
+import handsim.task.HeightGoals;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;

@@ -1,12 +1,12 @@
 package handsim.app;
 
 import handsim.config.Home;
-import handsim.scene.LiveRun;
-import handsim.scene.SimClock;
 import handsim.scene.HeightControl;
-import handsim.task.HeightGoals;
+import handsim.scene.LiveRun;
 import handsim.scene.SceneSetup;
+import handsim.scene.SimClock;
 import handsim.scene.SwitchingScene;
+import handsim.task.HeightGoals;
 import handsim.viewer.Viewer;
 import handsim.viewer.ViewerConfig;
 import java.nio.file.Path;

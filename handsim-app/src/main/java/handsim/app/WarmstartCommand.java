@@ -1,17 +1,15 @@
 package handsim.app;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.ThrowParameters;
 import handsim.learn.ActorPretraining;
 import handsim.learn.DdpgAgent;
-import handsim.model.HandModel;
 import handsim.report.Outputs;
 import handsim.rollout.Rollouts;
-import handsim.task.Tasks;
+import handsim.sim.Simulator;
+import handsim.spec.RunConfigs;
 import handsim.train.ThrowEnvFactory;
 import handsim.train.Warmstart;
 import java.nio.file.Path;
@@ -19,6 +17,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -36,30 +35,39 @@ final class WarmstartCommand implements Callable<Integer> {
             description = "warm-start config, e.g. configs/train/flip-warmstart.json")
     Path config;
 
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set run.armRest=true "
+    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "override a config field, e.g. --set run.workers=1 "
             + "(repeatable; dotted paths into the file)")
     List<String> overrides = List.of();
 
     @Option(names = "--runs", paramLabel = "DIR", description = "where the run folder goes (default: runs/)")
     Path runs;
 
+    @Mixin
+    ClusterOptions cluster;
+
     @Override
     public Integer call() throws Exception {
+        cluster.validate();
         Warmstart.Config c = Warmstart.Config.parse(RunOptions.configFile(config, overrides));
-        HandModel model = Wiring.model(null);
-        ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), model);
-        Tasks tasks = Wiring.tasks();
-        double[] nominal = envs.space().toAction(tasks.create(c.train().run().task(), c.train().run().object()).nominalThrow());
-        Path dir = RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(), c.train().learner().seed());
+        RunConfigs configs = TrainCommand.configs(c.train().run());
+        ThrowEnvFactory envs = TrainCommand.environments(c.train().run(), configs);
+        double[] nominal = envs.space().toAction(configs.task(c.train().run().task()).newTask(c.train().run().object()).nominalThrow());
+        // a cluster is reached before the run folder is made: a master that cannot be used leaves nothing behind
+        Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.rollouts(cluster, configs, "handsim warmstart "
+                + c.train().run().name() + " seed " + c.train().learner().seed()) : null;
+        Path dir = ClusterWiring.closingOnFailure(remote, () -> RunFolders.claim(runs, "--runs", "warmstart", c.train().run().name(),
+                c.train().learner().seed()));
         Outputs.writeJson(dir.resolve("config.json"), c.toJson());
+        TrainCommand.recordSpec(dir, configs);
         Outputs.writeJson(dir.resolve("run.json"),
                 RunOptions.provenance(RunOptions.commandLine("warmstart", config, overrides), c.train().learner().seed()));
         System.out.printf(Locale.ROOT, "warm start of the %s task (%s) in %s: CMA-ES over %d initial conditions, %d evaluations "
-                + "each at most, on %d workers%n", c.train().run().task(), c.train().run().object(), dir,
-                c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(), c.train().run().workers());
+                + "each at most, on %s%n", c.train().run().task(), c.train().run().object(), dir,
+                c.warmstart().initialConditions(), c.train().learner().cmaes().maxEvaluations(),
+                cluster.remote() ? "--master " + cluster.master() : c.train().run().workers() + " workers");
         List<Warmstart.Search> searches;
-        try (Rollouts<Simulator> rollouts = Wiring.rollouts(model, Wiring.simConfig(), c.train().run().workers())) {
-            searches = Warmstart.search(c, envs, nominal, rollouts, System.out);
+        try (Rollouts<Simulator> rollouts = remote != null ? remote : Wiring.rollouts(configs.model(), configs.sim(), c.train().run().workers())) {
+            searches = Warmstart.search(c, envs, nominal, rollouts, cluster.remote() ? PortableWarmstart.shipper(c, configs) : null, System.out);
         }
         ArrayNode all = Json.mapper().createArrayNode();
         for (Warmstart.Search s : searches) {

@@ -1,20 +1,18 @@
 package handsim.scene;
 
-import handsim.task.CatchThrowEpisode;
-import handsim.task.Goal;
-import handsim.task.HeightGoals;
-import handsim.task.HeightTask;
-import handsim.task.LoopRecord;
-import handsim.task.ThrowTask;
-
-import handsim.evaluation.CatchEvaluation;
-import handsim.planning.ThrowPlanner;
-
 import handsim.control.Phase;
+import handsim.evaluation.CatchEvaluation;
 import handsim.math.Vec3;
+import handsim.planning.ThrowPlanner;
 import handsim.sim.SimulationDiverged;
 import handsim.sim.Simulator;
 import handsim.sim.WorldSnapshot;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.EpisodeLimits;
+import handsim.task.Goal;
+import handsim.task.LoopRecord;
+import handsim.task.ThrowTask;
+import handsim.taskdef.SteeredTask;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -33,6 +31,8 @@ public final class CatchLoopScene implements InteractiveScene {
     /** Closed with the scene besides {@link #sim} (a planner's twin world), or null. */
     private final AutoCloseable alsoOwned;
     private final CatchEvaluation evaluation;
+    /** The evaluation's task with its goal's drawing and steering. */
+    private final SteeredTask steered;
     private final HeightControl heightControl;
     private CatchThrowEpisode episode;
     private long seed;
@@ -46,16 +46,20 @@ public final class CatchLoopScene implements InteractiveScene {
     /** Why the scene stopped throwing objects in, or null while it runs. */
     private String stopped;
 
-    /** Owns {@code sim} (closed with the scene) and starts the episode of {@code seed}. */
-    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl) {
-        this(sim, evaluation, seed, heightControl, null);
-    }
-
-    /** As above, also owning {@code alsoOwned} (the twin world of a {@link CatchEvaluation#planned} evaluation). */
-    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, long seed, HeightControl heightControl, AutoCloseable alsoOwned) {
+    /**
+     * Owns {@code sim} (closed with the scene) and {@code alsoOwned} (the twin world of a {@link
+     * CatchEvaluation#planned} evaluation, or null), and starts the episode of {@code seed};
+     * {@code steered} is the evaluation's task with its goal's hooks.
+     */
+    public CatchLoopScene(Simulator sim, CatchEvaluation evaluation, SteeredTask steered, long seed, HeightControl heightControl,
+            AutoCloseable alsoOwned) {
+        if (steered.task() != evaluation.task()) {
+            throw new IllegalArgumentException("the scene steers another task than its evaluation runs");
+        }
         this.sim = sim;
         this.alsoOwned = alsoOwned;
         this.evaluation = evaluation;
+        this.steered = steered;
         this.heightControl = heightControl;
         this.seed = seed;
         this.episode = evaluation.start(sim, seed);
@@ -117,7 +121,6 @@ public final class CatchLoopScene implements InteractiveScene {
 
     @Override
     public String apply(SceneCommand command) {
-        ThrowTask task = evaluation.task();
         double step = heightControl.step();
         switch (command) {
             case RESET -> {
@@ -132,30 +135,23 @@ public final class CatchLoopScene implements InteractiveScene {
                 restart("new throw");
                 return "new throw: episode of seed " + seed;
             }
-            case GOAL_UP, GOAL_DOWN -> {
-                boolean up = command == SceneCommand.GOAL_UP;
-                double dy = up ? step : -step;
-                if (task instanceof HeightTask h) {
-                    HeightGoals goals = h.goals();
-                    dy = up ? Math.min(step, heightControl.max() - goals.high()) : Math.max(-step, heightControl.min() - goals.low());
-                    if (up ? dy < 1e-9 : dy > -1e-9) {
-                        return String.format(Locale.ROOT, "height goals already at their %s bound (%.2f-%.2f m allowed)",
-                                up ? "upper" : "lower", heightControl.min(), heightControl.max());
-                    }
-                }
-                return task.moveGoal(new Vec3(0, dy, 0));
+            case GOAL_UP -> {
+                return steered.moveGoal().apply(new Vec3(0, step, 0));
+            }
+            case GOAL_DOWN -> {
+                return steered.moveGoal().apply(new Vec3(0, -step, 0));
             }
             case GOAL_LEFT -> {
-                return task.moveGoal(new Vec3(-step, 0, 0));
+                return steered.moveGoal().apply(new Vec3(-step, 0, 0));
             }
             case GOAL_RIGHT -> {
-                return task.moveGoal(new Vec3(step, 0, 0));
+                return steered.moveGoal().apply(new Vec3(step, 0, 0));
             }
             case GOAL_NEARER -> {
-                return task.moveGoal(new Vec3(0, 0, -step));
+                return steered.moveGoal().apply(new Vec3(0, 0, -step));
             }
             case GOAL_FARTHER -> {
-                return task.moveGoal(new Vec3(0, 0, step));
+                return steered.moveGoal().apply(new Vec3(0, 0, step));
             }
             default -> {
                 return command + " is not something this scene can do";
@@ -169,7 +165,7 @@ public final class CatchLoopScene implements InteractiveScene {
      */
     @Override
     public Goal goal() {
-        Goal g = evaluation.task().drawing();
+        Goal g = steered.goal().get();
         double inFlight = episode.throwGoal();
         if (g instanceof Goal.Height h && !Double.isNaN(inFlight) && episode.controllerState().phase() != Phase.MIDDLE) {
             return new Goal.Height(inFlight, h.center());

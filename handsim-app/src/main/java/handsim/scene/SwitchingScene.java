@@ -1,8 +1,7 @@
 package handsim.scene;
 
-import handsim.task.Goal;
-
 import handsim.sim.WorldSnapshot;
+import handsim.task.Goal;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;

@@ -7,7 +7,7 @@
  * {@link handsim.scene.SimClock}).
  *
  * <p>Imports {@code handsim.task}, {@code handsim.evaluation} (seeded episodes), {@code handsim.planning}
- * (the planner's throws) and what they stand
+ * (the planner's throws), {@code handsim.taskdef} (a task's goal to draw and steer) and what they stand
  * on ({@code handsim.math}, {@code handsim.config}, {@code handsim.model}, {@code handsim.kin},
  * {@code handsim.sim}, {@code handsim.control}); never an engine, LWJGL, picocli or the app: the
  * viewer draws what a scene shows.

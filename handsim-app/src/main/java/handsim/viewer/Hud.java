@@ -1,7 +1,7 @@
 package handsim.viewer;
 
-import handsim.scene.LiveFrame;
 import handsim.scene.InteractiveScene;
+import handsim.scene.LiveFrame;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.FontMetrics;

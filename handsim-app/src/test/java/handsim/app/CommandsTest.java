@@ -1,23 +1,26 @@
 package handsim.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.scene.HeightControl;
-import handsim.task.HeightGoals;
 import handsim.scene.InteractiveScene;
 import handsim.scene.SceneCatalog;
 import handsim.scene.SceneSetup;
+import handsim.task.HeightGoals;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -97,7 +100,7 @@ class CommandsTest {
         String config = handsim.config.Home.resolve("configs/train/flip-warmstart.json").toString();
         // a misspelt key is named, and a refused warm start writes nothing
         assertRefused("bogus", "warmstart", "--config", config, "--set", "run.bogus=1", "--runs", dir.toString());
-        assertRefused("--set takes KEY=VALUE, got \"run.armRest\"", "warmstart", "--config", config, "--set", "run.armRest", "--runs",
+        assertRefused("--set takes KEY=VALUE, got \"run.taskSet\"", "warmstart", "--config", config, "--set", "run.taskSet", "--runs",
                 dir.toString());
         // one initial condition can never give the 2 examples a fit needs: refused before the search
         assertRefused("initialConditions", "warmstart", "--config", config, "--set", "warmstart.initialConditions=1", "--runs",
@@ -105,10 +108,10 @@ class CommandsTest {
         try (var listed = Files.list(dir)) {
             assertEquals(0, listed.count(), "nothing written by a refused warm start");
         }
-        // a tiny warm start of the can drawn to its arm rest: two initial conditions (the fewest
+        // a tiny warm start of the can drawn to its arm rest (no taskSet: the task as its file says): two initial conditions (the fewest
         // the actor can be fitted to), two throws tried for each, every one kept; the run's config
         // and command carry the overrides
-        String[] overrides = {"--set", "run.armRest=true", "--set", "run.workers=1", "--set", "warmstart.initialConditions=2",
+        String[] overrides = {"--set", "run.taskSet={}", "--set", "run.workers=1", "--set", "warmstart.initialConditions=2",
             "--set", "warmstart.keepReward=-100", "--set", "cmaes.maxEvaluations=2", "--set", "pretrain.epochs=1"};
         String[] args = java.util.stream.Stream.concat(java.util.stream.Stream.of("warmstart", "--config", config, "--runs", dir.toString()),
                 Arrays.stream(overrides)).toArray(String[]::new);
@@ -118,12 +121,12 @@ class CommandsTest {
             run = listed.filter(Files::isDirectory).findFirst().orElseThrow();
         }
         JsonNode saved = Json.load(run.resolve("config.json")).node();
-        assertTrue(saved.at("/run/armRest").asBoolean(), saved.toString());
+        assertEquals(0, saved.at("/run/taskSet").size(), saved.toString());
         assertEquals(2, saved.at("/cmaes/maxEvaluations").asInt(), saved.toString());
         JsonNode record = Json.load(run.resolve("run.json")).node();
         assertEquals(1, record.get("seed").asInt(), "the config's seed, recorded as train and dagger record theirs");
         assertTrue(record.get("command").asText()
-                .endsWith("--set run.armRest=true --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
+                .endsWith("--set 'run.taskSet={}' --set run.workers=1 --set warmstart.initialConditions=2 --set warmstart.keepReward=-100 "
                         + "--set cmaes.maxEvaluations=2 --set pretrain.epochs=1"));
     }
 
@@ -500,6 +503,52 @@ class CommandsTest {
     }
 
     @Test
+    void aRunRepeatsFromItsRecordedSpecAlone(@TempDir Path dir) throws Exception {
+        // the flip can run with a --task-set variant, recorded; its spec holds the options, the task's file as changed and
+        // every other document read: run again from the record alone it gives the same summary, key by key
+        Path first = dir.resolve("first.json");
+        runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "2", "--loops", "2", "--seed", "3", "--workers", "1",
+                "--task-set", "objects.can.armRest=null", "--json", first.toString());
+        JsonNode recorded = Json.load(first).node();
+        JsonNode spec = recorded.get("spec");
+        assertFalse(spec.get("configs").get("configs/tasks/flip.json").get("objects").get("can").has("armRest"),
+                "the task's file as the run read it: " + spec.get("configs").fieldNames());
+        for (String read : List.of("models/arm_hand.json", "configs/sim.json", "configs/controller.json", "configs/episode.json",
+                "configs/launch.json", "configs/objects/can.json", "configs/evaluation.json")) {
+            assertTrue(spec.get("configs").has(read), read + " is recorded");
+        }
+        Path again = dir.resolve("again.json");
+        runPrinting("evaluate", "--spec", first.toString(), "--workers", "2", "--json", again.toString());
+        ObjectNode a = (ObjectNode) recorded.deepCopy(), b = (ObjectNode) Json.load(again).node().deepCopy();
+        for (ObjectNode o : List.of(a, b)) {
+            o.remove(List.of("provenance", "wall_s", "workers")); // where and how fast it ran, not what it did
+        }
+        assertEquals(a, b, "the same run");
+        CliRun.of("evaluate", "--spec", first.toString(), "--seed", "4").assertRefused(2, "--seed goes without --spec");
+        CliRun.of("evaluate", "--spec", dir.resolve("none.json").toString()).assertRefused(2, "none.json");
+    }
+
+    @Test
+    void everyTasksSummaryReportsTheMotionQualityUnderTheSameKeys(@TempDir Path dir) throws Exception {
+        // joint-limit excess, penetration and peak torque ratio over all loops (paper sec. 4.1), for height, box and flip alike
+        List<String[]> runs = List.of(new String[] {"--task", "height", "--episodes", "1", "--loops", "1"},
+                new String[] {"--task", "box", "--tests", "1"}, new String[] {"--task", "flip", "--object", "can", "--episodes", "1",
+                        "--loops", "1"});
+        for (String[] run : runs) {
+            Path json = dir.resolve(run[1] + ".json");
+            List<String> args = new java.util.ArrayList<>(List.of("evaluate", "--seed", "2", "--workers", "1", "--json", json.toString()));
+            args.addAll(List.of(run));
+            runPrinting(args.toArray(String[]::new));
+            JsonNode summary = Json.load(json).node();
+            for (String key : List.of("max_limit_excess_deg", "max_penetration_mm", "peak_torque_ratio")) {
+                // penetration of a few mm at most and torques clamped at the human limits (ratio <= 1) in every shipped loop
+                assertTrue(summary.get(key).isNumber() && summary.get(key).asDouble() >= 0, run[1] + " " + key + ": " + summary.get(key));
+            }
+            assertTrue(summary.get("peak_torque_ratio").asDouble() <= 1 + 1e-9, run[1] + ": torques are clamped at their limits");
+        }
+    }
+
+    @Test
     void boxEvaluationOfFewTestsWritesStrictJsonWithNoRateForAnEmptyBand(@TempDir Path dir) throws Exception {
         Path json = dir.resolve("box.json");
         String text = runPrinting("evaluate", "--task", "box", "--tests", "1", "--seed", "1", "--workers", "1",
@@ -620,6 +669,24 @@ class CommandsTest {
         Path run = Path.of(Files.readString(told));
         assertTrue(run.isAbsolute() && run.startsWith(dir.resolve("runs").toAbsolutePath()), run.toString());
         assertTrue(Files.isRegularFile(run.resolve("policy.json")), "the folder named is the run's: " + run);
+        // the folder records every configuration document the run read, the resume plays in them
+        JsonNode spec = Json.load(run.resolve(TrainCommand.SPEC)).node();
+        for (String read : List.of("models/arm_hand.json", "configs/sim.json", "configs/controller.json", "configs/tasks/height.json",
+                "configs/objects/sphere.json")) {
+            assertTrue(spec.has(read), read + " is recorded: " + spec.fieldNames());
+        }
+        assertEquals(Json.load(handsim.config.Home.resolve("configs/sim.json")).node(), spec.get("configs/sim.json"), "as the file reads");
+        // a resume reads the record as its input and leaves the file as it is (the same file, not a copy written over it)
+        Object recordFile = Files.readAttributes(run.resolve(TrainCommand.SPEC), java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+        try {
+            System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+            code = Main.run("train", "--resume", run.toString(), "--episodes", "2");
+        } finally {
+            System.setOut(stdout);
+        }
+        assertEquals(0, code);
+        assertEquals(recordFile, Files.readAttributes(run.resolve(TrainCommand.SPEC), java.nio.file.attribute.BasicFileAttributes.class)
+                .fileKey(), "spec.json untouched by the resume");
     }
 
     @Test

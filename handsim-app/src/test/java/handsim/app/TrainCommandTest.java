@@ -3,13 +3,12 @@ package handsim.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import handsim.TestSupport;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.train.TrainConfig;
-import java.util.Map;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -23,15 +22,16 @@ class TrainCommandTest {
     void aFlipRunTrainsWithTheCatchAndTheArmRestItsConfigSays() {
         // configs/train/flip.json: the controller's own catch and no arm rest, as the shipped can policy was trained
         TrainConfig flip = TrainConfig.load(Home.resolve("configs/train/flip.json"));
-        ControllerConfig shipped = TrainCommand.environments(flip.run(), TestSupport.model()).tasks().get().controller(base);
+        ControllerConfig shipped = TrainCommand.environments(flip.run(), TrainCommand.configs(flip.run())).tasks().get().controller(base);
         assertTrue(shipped.armRest().isEmpty(), "no arm rest");
         assertEquals(new CatchStyle(0, 0.7), shipped.catchAfterThrow().orElseThrow(), "the run's catch");
 
-        TrainConfig withRest = TrainConfig.parse(Json.of("set", Json.withOverrides("flip.json",
-                Json.load(Home.resolve("configs/train/flip.json")).node(), Map.of("run.armRest", "true"))));
-        ControllerConfig resting = TrainCommand.environments(withRest.run(), TestSupport.model()).tasks().get().controller(base);
-        assertTrue(resting.armRest().isPresent(), "run.armRest true: the task's arm rest (configs/tasks/flip.json)");
-        assertEquals(shipped.catchAfterThrow(), resting.catchAfterThrow(), "the catch stays the run's");
+        ObjectNode file = (ObjectNode) Json.load(Home.resolve("configs/train/flip.json")).node().deepCopy();
+        ((ObjectNode) file.get("run").get("taskSet")).remove("objects.can.armRest");
+        TrainConfig withRest = TrainConfig.parse(Json.of("flip.json", file));
+        ControllerConfig resting = TrainCommand.environments(withRest.run(), TrainCommand.configs(withRest.run())).tasks().get()
+                .controller(base);
+        assertTrue(resting.armRest().isPresent(), "run.taskSet without the arm rest's null: the task's arm rest (configs/tasks/flip.json)");
     }
 
     @Test

@@ -1,12 +1,5 @@
 package handsim.scene;
 
-import handsim.task.EpisodeLimits;
-import handsim.task.Goal;
-import handsim.task.HeightGoals;
-import handsim.task.LaunchDistribution;
-
-import handsim.evaluation.CatchEvaluation;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -15,7 +8,13 @@ import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
+import handsim.evaluation.CatchEvaluation;
 import handsim.sim.ode.OdeSimulator;
+import handsim.task.EpisodeLimits;
+import handsim.task.Goal;
+import handsim.task.HeightGoals;
+import handsim.task.LaunchDistribution;
+import handsim.taskdef.SteeredTask;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Tag;
@@ -105,11 +104,12 @@ class InteractiveScenesTest {
     void heightGoalsMoveInStepsWithinTheirBoundsAndTheBoxKeysSayThereIsNoBox() {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
         HeightGoals goals = new HeightGoals(1.1, 1.3);
-        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), TestSupport.heightTask(goals));
         HeightControl control = new HeightControl(0.05, 1.0, 1.4);
+        SteeredTask steered = TestSupport.configs().height().steered("sphere", goals, control.min(), control.max());
+        CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), steered.task());
         try (CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()),
-                evaluation, 7, control)) {
+                evaluation, steered, 7, control, null)) {
             double first = ((Goal.Height) scene.goal()).height();
             assertEquals(goals.current(), first, 0, "before the first throw the plane shows the first goal");
             scene.apply(SceneCommand.GOAL_UP);

@@ -9,19 +9,20 @@ import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
+import handsim.evaluation.CatchEvaluation;
 import handsim.kin.Frame;
+import handsim.math.Vec3;
+import handsim.scene.CatchLoopScene;
+import handsim.scene.HeightControl;
 import handsim.scene.LiveFrame;
 import handsim.scene.LiveRun;
 import handsim.scene.SimClock;
-import handsim.math.Vec3;
 import handsim.sim.ode.OdeSimulator;
-import handsim.evaluation.CatchEvaluation;
-import handsim.scene.CatchLoopScene;
 import handsim.task.EpisodeLimits;
 import handsim.task.Goal;
-import handsim.scene.HeightControl;
 import handsim.task.HeightGoals;
 import handsim.task.LaunchDistribution;
+import handsim.taskdef.SteeredTask;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
 import java.util.HashSet;
@@ -53,10 +54,11 @@ class ViewerTest {
     void drawsTheArmTheObjectAndTheGoalPlaneWhereTheCameraProjectsThem(@TempDir Path dir) throws Exception {
         ViewerConfig config = AppTestSupport.viewerConfig();
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        SteeredTask steered = TestSupport.configs().height().steered("sphere", HeightGoals.fixed(1.2), 0.8, 1.7);
         CatchEvaluation evaluation = CatchEvaluation.nominal(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
-                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), TestSupport.heightTask(HeightGoals.fixed(1.2)));
-        CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()), evaluation, SEED,
-                new HeightControl(0.05, 0.8, 1.7));
+                LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object("sphere"), steered.task());
+        CatchLoopScene scene = new CatchLoopScene(new OdeSimulator(TestSupport.model(), TestSupport.simConfig()), evaluation, steered, SEED,
+                new HeightControl(0.05, 0.8, 1.7), null);
         ViewerConfig.Pacing p = config.pacing();
         try (LiveRun run = new LiveRun(scene, new SimClock(p.maxLagSeconds()), p.minChunkSeconds(), p.maxChunkSeconds(), s -> { });
                 Viewer viewer = new Viewer(config, run, dir, "handsim test", false)) {

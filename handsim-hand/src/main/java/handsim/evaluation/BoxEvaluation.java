@@ -1,16 +1,16 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.task.BoxTask;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 
 /**
  * The box task's evaluation (paper sec. 4.3, Fig. 8): one trial per box position (seeded, or
@@ -18,20 +18,29 @@ import java.util.Locale;
  * rebound; the summary holds the success rate by distance from the region's centre and the
  * success map.
  */
-final class BoxEvaluation extends TaskEvaluation {
+public final class BoxEvaluation extends TaskEvaluation {
 
-    BoxEvaluation(EvaluationRequest request, EvaluationSetup setup) {
+    private final Supplier<BoxTask> tasks;
+    private final List<Vec3> boxes;
+
+    /**
+     * @param tasks a new task for each worker
+     * @param boxes the box centres to try (m, world), or null for the request's seeded ones
+     */
+    public BoxEvaluation(EvaluationRequest request, EvaluationSetup setup, Supplier<BoxTask> tasks, List<Vec3> boxes) {
         super(request, setup);
+        this.tasks = tasks;
+        this.boxes = boxes;
     }
 
     @Override
     public void run(Rollouts<Simulator> rollouts, ObjectNode out) throws IOException {
         String object = request.object();
-        BoxTask reference = (BoxTask) setup.tasks().create("box", object);
+        BoxTask reference = tasks.get();
         int required = reference.config().loopsRequired();
         List<Vec3> boxes = new ArrayList<>();
-        if (request.boxGoals() != null) {
-            boxes.addAll(request.boxGoals());
+        if (this.boxes != null) {
+            boxes.addAll(this.boxes);
         } else {
             for (int i = 0; i < request.tests(); i++) {
                 boxes.add(reference.drawCenter(request.seed() + i));
@@ -39,7 +48,7 @@ final class BoxEvaluation extends TaskEvaluation {
         }
         StringBuilder rows = new StringBuilder("test,seed,box_x,box_y,box_z,distance_m,success,hit_and_catch_in_a_row\n");
         List<BoxTrials.Trial> results = rollouts.run(boxes.size(), resumable(sim -> {
-            BoxTask t = (BoxTask) setup.tasks().create("box", object);
+            BoxTask t = tasks.get();
             CatchEvaluation evaluation = evaluation(t);
             return i -> BoxTrials.run(evaluation, t, sim, i, request.seed() + i, boxes.get(i), required);
         }, ResultJson::boxTrial, ResultJson::boxTrial), (i, r) -> {
@@ -69,9 +78,11 @@ final class BoxEvaluation extends TaskEvaluation {
             o.put("tests", in.size());
             putRate(o, "success_rate", in);
         }
+        MotionQuality motion = results.stream().map(BoxTrials.Trial::motion).reduce(MotionQuality.NONE, MotionQuality::max);
+        motion.putInto(out);
         console.printf(Locale.ROOT, "box task, %s controller, %s: %d of %d tests succeeded (%s); inner half of the region "
-                + "(within %.3f m of its centre): %s of %d%n", request.controller(), object, successes, results.size(),
-                percent(results), 0.5 * radius, percent(inner), inner.size());
+                + "(within %.3f m of its centre): %s of %d; %s%n", request.controller(), object, successes, results.size(),
+                percent(results), 0.5 * radius, percent(inner), inner.size(), motion.line());
         writeCsv(rows);
         if (request.plot() != null) {
             BoxTrials.writeMap(request.plot(), results, reference.regionCenter(), String.format(Locale.ROOT,

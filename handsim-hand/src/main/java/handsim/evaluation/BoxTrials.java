@@ -1,10 +1,10 @@
 package handsim.evaluation;
 
-import handsim.task.BoxTask;
-
 import handsim.math.Vec3;
 import handsim.report.Plot;
 import handsim.sim.Simulator;
+import handsim.task.BoxTask;
+import handsim.task.LoopRecord;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -24,8 +24,9 @@ public final class BoxTrials {
      * @param box the box centre (m, world)
      * @param distance its distance from the region's centre (m)
      * @param inARow hit-and-catch loops in a row before the test ended
+     * @param motion the motion figures over the trial's loops
      */
-    public record Trial(int index, long seed, Vec3 box, double distance, boolean success, int inARow) {
+    public record Trial(int index, long seed, Vec3 box, double distance, boolean success, int inARow, MotionQuality motion) {
     }
 
     private BoxTrials() {
@@ -35,8 +36,9 @@ public final class BoxTrials {
     public static Trial run(CatchEvaluation evaluation, BoxTask task, Simulator sim, int index, long seed, Vec3 box,
             int required) {
         task.placeAt(box);
-        int inARow = evaluation.successesInARow(evaluation.runWhileSuccessful(sim, seed, required));
-        return new Trial(index, seed, box, task.distanceFromRegionCenter(box), inARow >= required, inARow);
+        List<LoopRecord> loops = evaluation.runWhileSuccessful(sim, seed, required);
+        int inARow = evaluation.successesInARow(loops);
+        return new Trial(index, seed, box, task.distanceFromRegionCenter(box), inARow >= required, inARow, MotionQuality.of(loops));
     }
 
     /** Share of successful trials (NaN for none). */

@@ -2,6 +2,7 @@ package handsim.evaluation;
 
 import handsim.config.Home;
 import handsim.config.ReadLog;
+import handsim.rollout.RecordedTask;
 import handsim.rollout.RolloutTask;
 import java.util.SortedMap;
 import java.util.TreeMap;
@@ -180,25 +181,28 @@ public final class EpisodeJournal {
 
     /**
      * {@code task} that reads an episode back from this journal when an interrupted run of the
-     * same command finished it, and otherwise runs it and journals its result at once.
+     * same command finished it, and otherwise runs it and journals its result at once (on a
+     * cluster, the driver does both as results arrive: {@link RecordedTask}).
      */
-    public <W, R> RolloutTask<W, R> resumable(RolloutTask<W, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
-        return worker -> {
-            RolloutTask.Rollout<R> rollout = task.prepare(worker);
-            return i -> {
-                Optional<JsonNode> earlier = result(i);
+    public <W, R> RecordedTask<W, R> resumable(RolloutTask<W, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return new RecordedTask<>(task, write, read, new RecordedTask.Journal() {
+            @Override
+            public Optional<JsonNode> finished(int index) {
+                Optional<JsonNode> earlier = result(index);
                 if (earlier.isPresent()) {
-                    synchronized (this) {
+                    synchronized (EpisodeJournal.this) {
                         readBack++;
-                        used.add(i);
+                        used.add(index);
                     }
-                    return read.apply(earlier.get());
                 }
-                R result = rollout.run(i);
-                append(i, write.apply(result));
-                return result;
-            };
-        };
+                return earlier;
+            }
+
+            @Override
+            public void append(int index, JsonNode result) {
+                EpisodeJournal.this.append(index, result);
+            }
+        });
     }
 
     /**
@@ -231,12 +235,11 @@ public final class EpisodeJournal {
     public synchronized void append(int index, JsonNode result) {
         ObjectNode entry = JsonNodeFactory.instance.objectNode().put("index", index).put("commit", commit);
         entry.set("result", result);
-        try (FileChannel out = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
+        try {
             // after a line cut short by a kill, start on a line of one's own
             byte[] line = ((Files.size(file) > 0 && !endsWithNewline()) ? "\n" : "").concat(MAPPER.writeValueAsString(entry) + "\n")
                     .getBytes(StandardCharsets.UTF_8);
-            out.write(java.nio.ByteBuffer.wrap(line));
-            out.force(false);
+            Outputs.append(file, line);
             done.put(index, new Entry(result, commit));
             used.add(index);
         } catch (IOException e) {

@@ -1,7 +1,6 @@
 package handsim.evaluation;
 
 import handsim.config.Json;
-import handsim.task.FlipTask;
 import java.nio.file.Path;
 import java.util.Arrays;
 
@@ -13,10 +12,13 @@ import java.util.Arrays;
  * @param plannedProgressEvery a planned flip episode prints a line every this many loops in a row
  * @param flipBins the bins of the flip summary's counts
  */
-public record EvaluationConfig(int sensitivityThrows, int boxBands, int plannedProgressEvery, FlipTask.ReportBins flipBins) {
+public record EvaluationConfig(int sensitivityThrows, int boxBands, int plannedProgressEvery, FlipReport.Bins flipBins) {
 
     public static EvaluationConfig load(Path file) {
-        Json j = Json.load(file);
+        return parse(Json.load(file));
+    }
+
+    public static EvaluationConfig parse(Json j) {
         j.allow("comment", "sensitivityThrowsComment", "boxBandsComment", "plannedProgressEveryComment", "flipBinsComment");
         EvaluationConfig c = new EvaluationConfig(j.integer("sensitivityThrows", 0, 100000), j.integer("boxBands", 1, 100),
                 j.integer("plannedProgressEvery", 1, 100000), flipBins(j.get("flipBins")));
@@ -24,7 +26,7 @@ public record EvaluationConfig(int sensitivityThrows, int boxBands, int plannedP
         return c;
     }
 
-    private static FlipTask.ReportBins flipBins(Json j) {
+    private static FlipReport.Bins flipBins(Json j) {
         j.allow("comment");
         double angleBinDeg = j.number("angleBinDeg", 1, 90);
         if (Math.abs(90 / angleBinDeg - Math.round(90 / angleBinDeg)) > 1e-9) {
@@ -38,6 +40,6 @@ public record EvaluationConfig(int sensitivityThrows, int boxBands, int plannedP
             }
         }
         j.requireNoUnknownFields();
-        return new FlipTask.ReportBins(Math.toRadians(angleBinDeg), earlyThrows, edges);
+        return new FlipReport.Bins(Math.toRadians(angleBinDeg), earlyThrows, edges);
     }
 }

@@ -7,7 +7,6 @@ import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
 import handsim.task.EpisodeLimits;
 import handsim.task.LaunchDistribution;
-import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import java.io.PrintStream;
 import java.util.function.Function;
@@ -25,7 +24,7 @@ import java.util.function.UnaryOperator;
  * @param journal the finished episodes of this run and of an earlier, killed one (with --json), or null
  * @param console where the progress and summary lines go
  */
-public record EvaluationSetup(ControllerConfig controller, ObjectSpec object, Tasks tasks, EpisodeLimits limits,
+public record EvaluationSetup(ControllerConfig controller, ObjectSpec object, EpisodeLimits limits,
         LaunchDistribution launches, EvaluationConfig config, Function<ThrowTask, ThrowPolicy> policies,
         PlannerConfig planning, UnaryOperator<Simulator> twins, CatchEvaluation.TickWatcher watcher, EpisodeJournal journal,
         PrintStream console) {

@@ -11,7 +11,7 @@ import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
 import handsim.task.FlipTask;
 import handsim.task.LoopRecord;
-import handsim.task.Tasks;
+import handsim.task.Rest;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -19,6 +19,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.Supplier;
 import java.util.stream.Collectors;
 
 /**
@@ -28,13 +29,17 @@ import java.util.stream.Collectors;
  * ones failed ({@code per_throw}), the throws by flight rotation and by arrival tilt, and the
  * planner's work.
  */
-final class FlipEvaluation extends TaskEvaluation {
+public final class FlipEvaluation extends TaskEvaluation {
 
     /** The loops plot's height as a multiple of the loop cap: room above the highest bars for the legend. */
     private static final double LEGEND_ROOM = 1.15;
 
-    FlipEvaluation(EvaluationRequest request, EvaluationSetup setup) {
+    private final Supplier<FlipTask> tasks;
+
+    /** @param tasks a new task for each worker */
+    public FlipEvaluation(EvaluationRequest request, EvaluationSetup setup, Supplier<FlipTask> tasks) {
         super(request, setup);
+        this.tasks = tasks;
     }
 
     /** How a flip episode ended: its last throw dropped, caught standing, caught lying without a flip, or the cap reached. */
@@ -92,14 +97,13 @@ final class FlipEvaluation extends TaskEvaluation {
         int loops = request.loops();
         Path plot = request.plot();
         Path csv = request.csv();
-        Tasks tasks = setup.tasks();
-        FlipTask flipTask = (FlipTask) tasks.create("flip", object); // an object the flip task cannot take fails here
+        FlipTask flipTask = tasks.get();
         PlannerConfig planning = setup.planning();
         List<Simulator> twins = Collections.synchronizedList(new ArrayList<>());
         List<FlipRun> runs;
         try {
             runs = rollouts.run(request.episodes(), resumable(sim -> {
-                FlipTask t = (FlipTask) tasks.create("flip", object);
+                FlipTask t = tasks.get();
                 CatchEvaluation evaluation = evaluation(t);
                 if (planning != null) {
                     Simulator twin = setup.twins().apply(sim);
@@ -159,34 +163,36 @@ final class FlipEvaluation extends TaskEvaluation {
         out.put("loops_completed_max", runs.stream().mapToInt(FlipRun::inARow).max().orElse(0));
         out.put("flips", runs.stream().mapToInt(FlipRun::flips).sum());
         out.put("throws", runs.stream().mapToInt(FlipRun::throwsMade).sum());
+        MotionQuality motion = MotionQuality.of(runs.stream().flatMap(r -> r.loops().stream()).toList());
+        motion.putInto(out);
         ObjectNode endings = out.putObject("endings");
         for (FlipEnd end : FlipEnd.values()) {
             endings.put(end.label(), runs.stream().filter(r -> r.end() == end).count());
         }
         List<List<LoopRecord>> episodeLoops = runs.stream().map(FlipRun::loops).toList();
         List<LoopRecord> allLoops = episodeLoops.stream().flatMap(List::stream).toList();
-        FlipTask.ThrowTally tally = flipTask.tally(allLoops);
-        FlipTask.ReportBins report = setup.config().flipBins();
+        FlipReport report = new FlipReport(flipTask, setup.config().flipBins());
+        FlipReport.ThrowTally tally = report.tally(allLoops);
         // each episode's first throw, made from the caught throw-in, and those made from the hand's own catches
-        FlipTask.ThrowTally first = flipTask.tally(allLoops.stream().filter(l -> l.index() == 1).toList());
-        FlipTask.ThrowTally later = flipTask.tally(allLoops.stream().filter(l -> l.index() > 1).toList());
+        FlipReport.ThrowTally first = report.tally(allLoops.stream().filter(l -> l.index() == 1).toList());
+        FlipReport.ThrowTally later = report.tally(allLoops.stream().filter(l -> l.index() > 1).toList());
         putPerThrow(out, tally, first, later);
-        List<FlipTask.AngleBin> byHeading = flipTask.firstThrowsByRestHeading(episodeLoops, report);
+        List<FlipReport.AngleBin> byHeading = report.firstThrowsByRestHeading(episodeLoops);
         ArrayNode firstByHeading = out.putArray("first_throws_by_rest_heading");
-        for (FlipTask.AngleBin b : byHeading) {
+        for (FlipReport.AngleBin b : byHeading) {
             putBin(firstByHeading, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.RestCount> byRest = flipTask.laterThrowsByRest(episodeLoops, report);
+        List<FlipReport.RestCount> byRest = report.laterThrowsByRest(episodeLoops);
         ArrayNode laterByRest = out.putArray("later_throws_by_rest");
-        for (FlipTask.RestCount c : byRest) {
+        for (FlipReport.RestCount c : byRest) {
             putThrowsAfter(laterByRest.addObject().put("rest", c.rest().label()), c.throwsAfter());
         }
-        Optional<FlipTask.CatchDistances> byDistance = flipTask.laterThrowsByCatchDistance(episodeLoops, report);
+        Optional<FlipReport.CatchDistances> byDistance = report.laterThrowsByCatchDistance(episodeLoops);
         ObjectNode laterByDistance = out.putObject("later_throws_by_catch_distance");
         byDistance.ifPresent(d -> {
             laterByDistance.set("median_catch", ResultJson.vec(d.medianCatch()));
             ArrayNode distanceBins = laterByDistance.putArray("bins");
-            for (FlipTask.DistanceCount c : d.bins()) {
+            for (FlipReport.DistanceCount c : d.bins()) {
                 ObjectNode o = distanceBins.addObject().put("from_m", c.from());
                 if (Double.isFinite(c.to())) {
                     o.put("to_m", c.to());
@@ -194,14 +200,14 @@ final class FlipEvaluation extends TaskEvaluation {
                 putThrowsAfter(o, c.throwsAfter());
             }
         });
-        List<FlipTask.AngleBin> bins = flipTask.byFlightRotation(allLoops);
+        List<FlipReport.AngleBin> bins = report.byFlightRotation(allLoops);
         ArrayNode byRotation = out.putArray("throws_by_flight_rotation");
-        for (FlipTask.AngleBin b : bins) {
+        for (FlipReport.AngleBin b : bins) {
             putBin(byRotation, b.from(), b.to(), b.throwsMade(), b.successes());
         }
-        List<FlipTask.ArrivalBin> arrivals = flipTask.byArrivalTilt(allLoops, report);
+        List<FlipReport.ArrivalBin> arrivals = report.byArrivalTilt(allLoops);
         ArrayNode byArrival = out.putArray("throws_by_arrival_tilt");
-        for (FlipTask.ArrivalBin b : arrivals) {
+        for (FlipReport.ArrivalBin b : arrivals) {
             putBin(byArrival, b.from(), b.to(), b.throwsMade(), b.successes()).put("drops", b.drops()).put("standing", b.standing());
         }
         ArrayNode eps = out.putArray("episodes");
@@ -215,9 +221,9 @@ final class FlipEvaluation extends TaskEvaluation {
         }
         console.printf(Locale.ROOT, "flip task, %s controller, %s, %d episodes: flip-and-catch loops in a row mean %.2f "
                 + "(min %d, max %d, at most %d); %d flips by the successful throws, %d throws; ended by %d drops, %d catches not lying in the hand, "
-                + "%d throws that did not flip%n", request.controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
+                + "%d throws that did not flip; %s%n", request.controllerLabel(), object, runs.size(), mean, out.get("loops_completed_min").asInt(),
                 out.get("loops_completed_max").asInt(), loops, out.get("flips").asInt(), out.get("throws").asInt(),
-                endings.get("dropped").asInt(), endings.get("caught_standing").asInt(), endings.get("no_flip").asInt());
+                endings.get("dropped").asInt(), endings.get("caught_standing").asInt(), endings.get("no_flip").asInt(), motion.line());
         console.printf(Locale.ROOT, "per throw (%s): %d of %d throws succeed (%.1f %%); failed: %d arrived end-first, %d dropped, "
                 + "%d caught standing, %d did not flip%n", method(), tally.successes(), tally.throwsMade(), 100 * tally.successRate(),
                 tally.failures().get(FlipTask.Failure.ARRIVED_END_FIRST), tally.failures().get(FlipTask.Failure.DROPPED),
@@ -229,12 +235,12 @@ final class FlipEvaluation extends TaskEvaluation {
                         Math.toDegrees(b.to()), b.successes(), b.throwsMade())).collect(Collectors.joining("; ")));
         console.println(String.format(Locale.ROOT, "throws after the first by how the catch before them left the %s (flat: under "
                 + "%.0f deg out of the palm's plane; askew: %.0f deg or more from across it), throws 2-%d / from the %dth: ", object,
-                Math.toDegrees(FlipTask.FLAT_REST), Math.toDegrees(FlipTask.ASKEW_REST), report.earlyThrows(), report.earlyThrows() + 1)
+                Math.toDegrees(Rest.FLAT_TILT), Math.toDegrees(Rest.ASKEW_HEADING), setup.config().flipBins().earlyThrows(), setup.config().flipBins().earlyThrows() + 1)
                 + byRest.stream().map(c -> c.rest().label().replace('_', ' ') + " " + earlyAndLater(c.throwsAfter()))
                         .collect(Collectors.joining("; ")));
         byDistance.ifPresent(d -> console.println(String.format(Locale.ROOT, "throws after the first by how far (horizontally) the "
                 + "catch before them met the %s from the run's median catch (x %.1f, z %.1f cm), throws 2-%d / from the %dth: ", object,
-                100 * d.medianCatch().x(), 100 * d.medianCatch().z(), report.earlyThrows(), report.earlyThrows() + 1)
+                100 * d.medianCatch().x(), 100 * d.medianCatch().z(), setup.config().flipBins().earlyThrows(), setup.config().flipBins().earlyThrows() + 1)
                 + d.bins().stream().map(c -> (Double.isFinite(c.to()) ? String.format(Locale.ROOT, "%.0f-%.0f cm ", 100 * c.from(),
                         100 * c.to()) : String.format(Locale.ROOT, "over %.0f cm ", 100 * c.from())) + earlyAndLater(c.throwsAfter()))
                         .collect(Collectors.joining("; "))));
@@ -273,7 +279,7 @@ final class FlipEvaluation extends TaskEvaluation {
      * episode, made from the caught throw-in ({@code first_throw}), and for the throws made from
      * the hand's own catches ({@code later_throws}).
      */
-    private void putPerThrow(ObjectNode out, FlipTask.ThrowTally all, FlipTask.ThrowTally first, FlipTask.ThrowTally later) {
+    private void putPerThrow(ObjectNode out, FlipReport.ThrowTally all, FlipReport.ThrowTally first, FlipReport.ThrowTally later) {
         out.put("method", method());
         ObjectNode perThrow = putTally(out.putObject("per_throw"), all);
         putTally(perThrow.putObject("first_throw"), first);
@@ -281,23 +287,23 @@ final class FlipEvaluation extends TaskEvaluation {
     }
 
     /** Writes the counts of some throws after catches: early_throws, early_successes, later_throws, later_successes. */
-    private static ObjectNode putThrowsAfter(ObjectNode o, FlipTask.ThrowsAfter t) {
+    private static ObjectNode putThrowsAfter(ObjectNode o, FlipReport.ThrowsAfter t) {
         return o.put("early_throws", t.earlyThrows()).put("early_successes", t.earlySuccesses()).put("later_throws", t.laterThrows())
                 .put("later_successes", t.laterSuccesses());
     }
 
     /** "s of n / s of n": the early throws' successes, then the later ones'. */
-    private static String earlyAndLater(FlipTask.ThrowsAfter t) {
+    private static String earlyAndLater(FlipReport.ThrowsAfter t) {
         return String.format(Locale.ROOT, "%d of %d / %d of %d", t.earlySuccesses(), t.earlyThrows(), t.laterSuccesses(), t.laterThrows());
     }
 
     /** "s of n succeed (r %)", or "none made". */
-    private static String successes(FlipTask.ThrowTally tally) {
+    private static String successes(FlipReport.ThrowTally tally) {
         return tally.throwsMade() == 0 ? "none made"
                 : String.format(Locale.ROOT, "%d of %d succeed (%.1f %%)", tally.successes(), tally.throwsMade(), 100 * tally.successRate());
     }
 
-    private static ObjectNode putTally(ObjectNode o, FlipTask.ThrowTally tally) {
+    private static ObjectNode putTally(ObjectNode o, FlipReport.ThrowTally tally) {
         o.put("throws", tally.throwsMade());
         o.put("successes", tally.successes());
         putFinite(o, "success_rate", tally.successRate());
@@ -324,10 +330,10 @@ final class FlipEvaluation extends TaskEvaluation {
     }
 
     /** Throws per bin of flight rotation (grey) with the successes among them (blue) drawn over them. */
-    private void plotByRotation(List<FlipTask.AngleBin> bins, Path png) throws IOException {
+    private void plotByRotation(List<FlipReport.AngleBin> bins, Path png) throws IOException {
         double[] x = new double[bins.size()], made = new double[bins.size()], succeeded = new double[bins.size()];
         for (int i = 0; i < x.length; i++) {
-            FlipTask.AngleBin b = bins.get(i);
+            FlipReport.AngleBin b = bins.get(i);
             x[i] = Math.toDegrees(b.from() + b.to()) / 2;
             made[i] = b.throwsMade();
             succeeded[i] = b.successes();
@@ -350,11 +356,11 @@ final class FlipEvaluation extends TaskEvaluation {
      * (each bar drawn over the taller one before it): caught lying but not flipped (grey),
      * dropped (red), caught standing (orange), flipped and caught lying (blue).
      */
-    private void plotByArrival(List<FlipTask.ArrivalBin> bins, Path png) throws IOException {
+    private void plotByArrival(List<FlipReport.ArrivalBin> bins, Path png) throws IOException {
         int n = bins.size();
         double[] x = new double[n], all = new double[n], notDropped = new double[n], lying = new double[n], ok = new double[n];
         for (int i = 0; i < n; i++) {
-            FlipTask.ArrivalBin b = bins.get(i);
+            FlipReport.ArrivalBin b = bins.get(i);
             x[i] = Math.toDegrees(b.from() + b.to()) / 2;
             all[i] = b.throwsMade();
             ok[i] = b.successes();

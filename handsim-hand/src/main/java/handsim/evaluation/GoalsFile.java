@@ -3,7 +3,6 @@ package handsim.evaluation;
 import handsim.config.Json;
 import handsim.math.Vec3;
 import handsim.task.HeightTask;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -16,19 +15,18 @@ public final class GoalsFile {
     private GoalsFile() {
     }
 
-    /** The heights of {@code file}, each a goal {@code height} allows. */
-    public static double[] heights(Path file, HeightTask.Config height) {
+    /** The heights of a goals file, each a goal {@code height} allows. */
+    public static double[] heights(Json file, HeightTask.Config height) {
         return read(file, "heights", 1, height).stream().mapToDouble(g -> g[0]).toArray();
     }
 
-    /** The box centres of {@code file}. */
-    public static List<Vec3> boxes(Path file) {
+    /** The box centres of a goals file. */
+    public static List<Vec3> boxes(Json file) {
         return read(file, "boxes", 3, null).stream().map(b -> new Vec3(b[0], b[1], b[2])).toList();
     }
 
     /** The goals listed under {@code key}, each with {@code size} numbers. */
-    private static List<double[]> read(Path file, String key, int size, HeightTask.Config height) {
-        Json j = Json.load(file);
+    private static List<double[]> read(Json j, String key, int size, HeightTask.Config height) {
         List<double[]> out = new ArrayList<>();
         for (Json g : j.array(key)) {
             double[] goal = size == 1 ? new double[] {g.asNumber()} : g.asNumbers(size);

@@ -1,26 +1,31 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.task.EpisodeResult;
+import handsim.task.HeightTask;
 import handsim.task.LoopRecord;
 import java.io.IOException;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 
 /**
  * The height task's evaluation (paper sec. 4.2, Fig. 5): episodes of up to {@code loops} throws,
  * each aiming at its goal apex; the summary holds the catches and drops, the height errors and
  * their histogram, and the natural-motion figures (joint-limit excess, penetration, torque).
  */
-final class HeightEvaluation extends TaskEvaluation {
+public final class HeightEvaluation extends TaskEvaluation {
 
-    HeightEvaluation(EvaluationRequest request, EvaluationSetup setup) {
+    private final Supplier<HeightTask> tasks;
+
+    /** @param tasks a new task for each worker, aiming at the request's goals */
+    public HeightEvaluation(EvaluationRequest request, EvaluationSetup setup, Supplier<HeightTask> tasks) {
         super(request, setup);
+        this.tasks = tasks;
     }
 
     @Override
@@ -31,7 +36,7 @@ final class HeightEvaluation extends TaskEvaluation {
         int loops = request.loops();
         // episode i has seed --seed + i on whichever worker runs it; printed in seed order
         List<EpisodeResult> results = rollouts.run(request.episodes(), resumable(sim -> {
-            CatchEvaluation evaluation = evaluation(setup.tasks().height(heightGoals()));
+            CatchEvaluation evaluation = evaluation(tasks.get());
             return i -> evaluation.run(sim, seed + i, loops, longEpisodeProgress());
         }, ResultJson::episode, ResultJson::episode), (i, r) -> {
             for (LoopRecord loop : r.loops()) {

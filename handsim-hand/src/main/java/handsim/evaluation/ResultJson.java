@@ -6,10 +6,10 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.control.ThrowParameters;
 import handsim.math.Vec3;
+import handsim.planning.ThrowPlanner;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.EpisodeResult;
 import handsim.task.LoopRecord;
-import handsim.planning.ThrowPlanner;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -90,12 +90,16 @@ public final class ResultJson {
         number(o, "distance", t.distance());
         o.put("success", t.success());
         o.put("in_a_row", t.inARow());
+        number(o, "max_limit_excess", t.motion().maxLimitExcess());
+        number(o, "max_penetration", t.motion().maxPenetration());
+        number(o, "peak_torque_ratio", t.motion().peakTorqueRatio());
         return o;
     }
 
     public static BoxTrials.Trial boxTrial(JsonNode o) {
         return new BoxTrials.Trial(o.get("index").asInt(), o.get("seed").asLong(), vec(o.get("box")), number(o, "distance"),
-                o.get("success").asBoolean(), o.get("in_a_row").asInt());
+                o.get("success").asBoolean(), o.get("in_a_row").asInt(), new MotionQuality(number(o, "max_limit_excess"),
+                        number(o, "max_penetration"), number(o, "peak_torque_ratio")));
     }
 
     public static ObjectNode plannerStats(ThrowPlanner.Stats s) {

@@ -1,7 +1,5 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -9,8 +7,8 @@ import handsim.math.Vec3;
 import handsim.report.Plot;
 import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
+import handsim.sim.Simulator;
 import handsim.task.LoopRecord;
-import handsim.task.Tasks;
 import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -19,6 +17,7 @@ import java.util.Arrays;
 import java.util.DoubleSummaryStatistics;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Supplier;
 import java.util.stream.DoubleStream;
 
 /**
@@ -27,10 +26,14 @@ import java.util.stream.DoubleStream;
  * each copy for {@code loops} throws whether they succeed or not; the spread of each throw's apex
  * and flight rotation across the copies, per episode, and its mean and median over episodes.
  */
-final class SensitivityEvaluation extends TaskEvaluation {
+public final class SensitivityEvaluation extends TaskEvaluation {
 
-    SensitivityEvaluation(EvaluationRequest request, EvaluationSetup setup) {
+    private final Supplier<ThrowTask> tasks;
+
+    /** @param tasks a new task for each worker */
+    public SensitivityEvaluation(EvaluationRequest request, EvaluationSetup setup, Supplier<ThrowTask> tasks) {
         super(request, setup);
+        this.tasks = tasks;
     }
 
     @Override
@@ -44,7 +47,6 @@ final class SensitivityEvaluation extends TaskEvaluation {
         int copies = request.copies();
         double nudge = request.nudge();
         Path plot = request.plot();
-        Tasks tasks = setup.tasks();
         ObjectSpec spec = setup.object();
         List<List<Vec3>> nudges = new ArrayList<>();
         for (int e = 0; e < episodes; e++) {
@@ -55,8 +57,7 @@ final class SensitivityEvaluation extends TaskEvaluation {
         List<List<LoopRecord>> copiesDone = new ArrayList<>();
         ArrayNode eps = out.putArray("episodes");
         rollouts.run(episodes * copies, resumable(sim -> {
-            ThrowTask t = task.equals("height") ? tasks.height(heightGoals()) : tasks.create(task, object);
-            CatchEvaluation evaluation = evaluation(t);
+            CatchEvaluation evaluation = evaluation(tasks.get());
             return j -> evaluation.run(sim, seed + j / copies, nudges.get(j / copies).get(j % copies), loops, null).loops();
         }, ResultJson::loops, ResultJson::loops), (j, loopsOfCopy) -> {
             copiesDone.add(loopsOfCopy);

@@ -1,14 +1,13 @@
 package handsim.evaluation;
 
-import handsim.sim.Simulator;
-
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.math.Vec3;
 import handsim.report.Outputs;
+import handsim.rollout.RecordedTask;
 import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
-import handsim.task.HeightGoals;
+import handsim.sim.Simulator;
 import handsim.task.ThrowTask;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -17,7 +16,8 @@ import java.util.function.Function;
 
 /**
  * One kind of evaluation run: its episodes spread over the rollout workers, then its summary in
- * the JSON, the console, the CSV and the chart. {@link #of} picks the kind a request asks for.
+ * the JSON, the console, the CSV and the chart. A task's definition ({@code handsim.taskdef})
+ * picks the kind a request asks for.
  */
 public abstract class TaskEvaluation {
 
@@ -29,18 +29,6 @@ public abstract class TaskEvaluation {
         this.request = request;
         this.setup = setup;
         this.console = setup.console();
-    }
-
-    /** The evaluation {@code request} asks for: a sensitivity run with copies, else the task's. */
-    public static TaskEvaluation of(EvaluationRequest request, EvaluationSetup setup) {
-        if (request.copies() != null) {
-            return new SensitivityEvaluation(request, setup);
-        }
-        return switch (request.task()) {
-            case "box" -> new BoxEvaluation(request, setup);
-            case "flip" -> new FlipEvaluation(request, setup);
-            default -> new HeightEvaluation(request, setup);
-        };
     }
 
     /** Runs the episodes on {@code rollouts} and puts the summary into {@code out}. */
@@ -57,19 +45,13 @@ public abstract class TaskEvaluation {
         return new LongEpisodeProgress(console, setup.limits().progressEveryLoops(), request.loops());
     }
 
-    /** A worker's height goals: the requested ones in turn, one fixed height, or (null) seeded random ones. */
-    protected HeightGoals heightGoals() {
-        return request.heightGoals() != null ? HeightGoals.sequence(request.heightGoals())
-                : request.throwHeight() != null ? HeightGoals.fixed(request.throwHeight()) : null;
-    }
-
     /**
      * {@code task} that reads an episode back from the journal when a killed run of the same
      * command finished it, and otherwise runs it and journals its result at once (without a
-     * journal, {@code task} itself).
+     * journal, {@code task} itself); its results' JSON form is also how they travel from a cluster.
      */
-    protected <R> RolloutTask<Simulator, R> resumable(RolloutTask<Simulator, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
-        return setup.journal() == null ? task : setup.journal().resumable(task, write, read);
+    protected <R> RecordedTask<Simulator, R> resumable(RolloutTask<Simulator, R> task, Function<R, JsonNode> write, Function<JsonNode, R> read) {
+        return setup.journal() == null ? new RecordedTask<>(task, write, read, null) : setup.journal().resumable(task, write, read);
     }
 
     /** Writes the CSV file, if one was asked for. */

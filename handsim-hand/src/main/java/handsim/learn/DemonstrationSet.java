@@ -1,12 +1,12 @@
 package handsim.learn;
 
-import java.io.BufferedWriter;
+import handsim.report.Outputs;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -23,6 +23,9 @@ import java.util.Map;
  * trial, {@code round, episode, decision, trial, success, reward, action_j} and the outcome measures
  * the set was made with, written just after
  * their episode's rows (a kill between the two loses the trials of that episode only).
+ * Episodes finish in an order that depends on the workers (threads or a cluster's executors) and
+ * their speed; once a round has all its episodes, {@link #sortEpisodes} puts both files in
+ * (round, episode) order, so that their bytes depend on the run alone.
  */
 public final class DemonstrationSet {
 
@@ -115,11 +118,37 @@ public final class DemonstrationSet {
         }
     }
 
-    private static void write(Path to, CharSequence text) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(to, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND)) {
-            w.append(text);
+    /**
+     * Rewrites both files with their rows in (round, episode) order, each episode's rows in the
+     * order they were written (a stable sort), atomically ({@link Outputs}): the files of a run
+     * are then the same whatever order its episodes finished in.
+     */
+    public synchronized void sortEpisodes() throws IOException {
+        sortRows(file);
+        sortRows(trialsFile());
+    }
+
+    private static void sortRows(Path f) throws IOException {
+        if (!Files.exists(f)) {
+            return;
         }
+        List<String> lines = Files.readAllLines(f, StandardCharsets.UTF_8);
+        if (lines.size() < 3) {
+            return;
+        }
+        List<String> rows = new ArrayList<>(lines.subList(1, lines.size()));
+        rows.sort(Comparator.comparingInt((String row) -> column(row, 0)).thenComparingInt(row -> column(row, 1)));
+        Outputs.writeString(f, lines.get(0) + "\n" + String.join("\n", rows) + "\n");
+    }
+
+    /** Column {@code i} (0: round, 1: episode) of a row of either file. */
+    private static int column(String row, int i) {
+        return Integer.parseInt(row.split(",", 3)[i]);
+    }
+
+    /** Appends rows, forced to disk ({@link Outputs#append}). */
+    private static void write(Path to, CharSequence text) throws IOException {
+        Outputs.append(to, text.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     private String header() {

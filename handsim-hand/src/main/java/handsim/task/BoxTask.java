@@ -5,7 +5,6 @@ import handsim.control.NominalThrows;
 import handsim.control.ThrowParameters;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
-import java.util.Locale;
 import java.util.SplittableRandom;
 
 /**
@@ -26,8 +25,8 @@ public final class BoxTask implements ThrowTask {
      * @param apexMargin the nominal throw's apex lies this far above the box's bottom face (m)
      * @param horizontalGain the nominal throw's horizontal palm offset per metre of the box's
      *     horizontal offset from the palm
+     * @param loopsRequired hit-and-catch loops in a row that make a box trial a success
      */
-    /** {@code configs/tasks/box.json}; {@code loopsRequired}: hit-and-catch loops in a row that make a box trial a success. */
     public record Config(double size, Vec3 regionLow, Vec3 regionHigh, double missWeight, double apexMargin,
             double horizontalGain, int loopsRequired) {
 
@@ -96,6 +95,16 @@ public final class BoxTask implements ThrowTask {
         return center.distance(neutralPalm.plus(config.regionCenter()));
     }
 
+    /** The box to draw (m, world): this episode's, else the one placed for the next, else the region's centre. */
+    public Vec3 shownBox() {
+        return box != null ? box : placed != null ? placed : regionCenter();
+    }
+
+    /** Where the next episode's box stands (m, world): where it was placed, else this episode's, else the region's centre. */
+    public Vec3 nextBox() {
+        return placed != null ? placed : box != null ? box : regionCenter();
+    }
+
     /** The box of the current episode (m, world). */
     public Vec3 box() {
         return box;
@@ -150,18 +159,5 @@ public final class BoxTask implements ThrowTask {
         return loop.boxHit() && loop.caught();
     }
 
-    @Override
-    public Goal drawing() {
-        Vec3 c = box != null ? box : placed != null ? placed : neutralPalm.plus(config.regionCenter());
-        double s = config.size();
-        return new Goal.Box(c, new Vec3(s, s, s));
-    }
 
-    @Override
-    public String moveGoal(Vec3 delta) {
-        Vec3 from = placed != null ? placed : box != null ? box : neutralPalm.plus(config.regionCenter());
-        placed = from.plus(delta);
-        return String.format(Locale.ROOT, "the box moves to (%.2f, %.2f, %.2f) m from the next throw-in",
-                placed.x(), placed.y(), placed.z());
-    }
 }

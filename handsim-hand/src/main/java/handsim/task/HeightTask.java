@@ -6,7 +6,6 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
 import handsim.math.Vec3;
 import handsim.sim.Simulator;
-import java.util.Locale;
 
 /**
  * Throw to a desired height (paper sec. 4.2): every throw aims at a new apex height. Reward eq.
@@ -24,10 +23,6 @@ public final class HeightTask implements ThrowTask {
      * @param missWeight the 0.1 of eq. (5)'s miss term (1/m)
      * @param successTolerance a caught throw within this of its target counts as a success (m)
      * @param space the box of throw parameters for this task
-     */
-    /**
-     * {@code configs/tasks/height.json}.
-     *
      * @param lowestGoal the lowest apex a goal may have (m, excluded): the catch meets a falling
      *     object where it crosses the interception plane, 0.72 m high (configs/controller.json), so
      *     an apex must lie above it
@@ -72,7 +67,6 @@ public final class HeightTask implements ThrowTask {
     private final HeightGoals goals;
     private final NominalThrows nominal;
     private final Vec3 missTarget;
-    private final Vec3 planeCenter;
 
     /**
      * @param goals the target heights (shared with whoever steers them, e.g. the viewer)
@@ -83,7 +77,6 @@ public final class HeightTask implements ThrowTask {
         this.goals = java.util.Objects.requireNonNull(goals, "goals");
         this.nominal = nominal;
         this.missTarget = new Vec3(neutralPalm.x(), groundHeight, neutralPalm.z());
-        this.planeCenter = neutralPalm;
     }
 
     /** The task over the config's goal range. */
@@ -153,19 +146,5 @@ public final class HeightTask implements ThrowTask {
         return loop.caught() && Math.abs(loop.apexHeight() - loop.targetHeight()) <= config.successTolerance();
     }
 
-    @Override
-    public Goal drawing() {
-        return new Goal.Height(goals.current(), planeCenter);
-    }
 
-    @Override
-    public String moveGoal(Vec3 delta) {
-        if (Math.abs(delta.y()) < 1e-12) {
-            return "the height task has no box to move (raise or lower the height goal instead)";
-        }
-        goals.shift(delta.y());
-        return String.format(Locale.ROOT, "next throws aim at %s", goals.high() > goals.low()
-                ? String.format(Locale.ROOT, "%.2f-%.2f m (now %.2f m)", goals.low(), goals.high(), goals.current())
-                : String.format(Locale.ROOT, "%.2f m", goals.current()));
-    }
 }

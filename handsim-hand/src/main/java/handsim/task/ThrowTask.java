@@ -3,7 +3,6 @@ package handsim.task;
 import handsim.control.ControllerConfig;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowSpace;
-import handsim.math.Vec3;
 import handsim.sim.Simulator;
 
 /**
@@ -76,17 +75,8 @@ public interface ThrowTask {
         return true;
     }
 
-    /** The current goal, for drawing. */
-    Goal drawing();
-
     /** The apex height the current throw aims at, for the loop record (NaN without a height goal). */
     default double targetHeight() {
         return Double.NaN;
     }
-
-    /**
-     * Moves the goal by {@code delta} (m, world) on a watcher's request and says what happened in
-     * one line; a task ignores the parts it has no use for.
-     */
-    String moveGoal(Vec3 delta);
 }

@@ -1,15 +1,21 @@
 package handsim.train;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.control.Observation;
 import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.learn.Dagger;
+import handsim.learn.DaggerEpisodes;
 import handsim.learn.DemonstrationSet;
 import handsim.learn.Policy;
 import handsim.report.Outputs;
+import handsim.rollout.PortableTask;
+import handsim.rollout.RecordedTask;
+import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
+import handsim.rollout.ShippableTask;
 import handsim.sim.Simulator;
 import handsim.planning.ThrowTeacher;
 import handsim.task.ThrowTask;
@@ -18,13 +24,13 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Function;
 import java.util.function.Predicate;
 
@@ -67,6 +73,19 @@ public final class DaggerRun {
     private final Rollouts<Simulator> rollouts;
     private final Function<Simulator, Simulator> twins;
     private final ObjectNode startedBy;
+    private Shipper shipper;
+
+    /** A round's episodes in the form that travels to a cluster (the app builds it from the run's configuration documents). */
+    @FunctionalInterface
+    public interface Shipper {
+
+        /**
+         * Round {@code round}'s episodes {@code requests} played by {@code actor} (a network's
+         * policy, or null for the task's nominal throw), the learner throwing from {@code
+         * learnerThrows} (null: every decision) with the lead-in policies it names.
+         */
+        PortableTask<Simulator> ship(int round, Policy actor, List<Dagger.Request> requests, DaggerRunConfig.LearnerThrows learnerThrows);
+    }
 
     private DaggerRun(Path dir, DaggerRunConfig config, ThrowEnvFactory envs, Rollouts<Simulator> rollouts, Function<Simulator, Simulator> twins) {
         this.dir = dir;
@@ -137,6 +156,16 @@ public final class DaggerRun {
         return dir;
     }
 
+    /**
+     * This run with its rounds' episodes shipped by {@code shipper} to the cluster its rollouts
+     * run on: the driver still reads back the episodes a killed run finished and alone writes
+     * the run's files.
+     */
+    public DaggerRun onCluster(Shipper shipper) {
+        this.shipper = shipper;
+        return this;
+    }
+
     /** Plays the rounds not yet finished, printing a line per round (and progress within it) to {@code out}. */
     public void run(PrintStream out) throws IOException {
         int n = envs.observationSize(), k = ThrowParameters.SIZE;
@@ -160,29 +189,12 @@ public final class DaggerRun {
                 long t0 = System.nanoTime();
                 Map<Integer, List<Dagger.Visit>> kept = journal.getOrDefault(r, Map.of());
                 Progress progress = new Progress(out, r, config.learner().episodesPerRound(), config.run().progressSeconds());
-                Dagger.Round round = dagger.round(r, actor, network, (a, requests) -> rollouts.run(requests.size(), sim -> {
-                    TeachableThrowEnv env = workers.computeIfAbsent(sim, s -> {
-                        Simulator twin = twins.apply(s);
-                        twinSims.add(twin);
-                        ThrowEnv throwEnv = envs.create(s);
-                        return new TeachableThrowEnv(throwEnv, new ThrowTeacher(config.teacher(), envs.tasks().get(),
-                                envs.space(), twin), gate(learnerThrows(), throwEnv.task(), envs));
-                    });
-                    return i -> {
-                        Dagger.Request req = requests.get(i);
-                        if (kept.containsKey(req.episode())) {
-                            return new Dagger.Episode(req, kept.get(req.episode()));
-                        }
-                        Dagger.Episode e = Dagger.play(env, req, a);
-                        try {
-                            set.append(e);
-                        } catch (IOException ex) {
-                            throw new java.io.UncheckedIOException(ex);
-                        }
-                        return e;
-                    };
-                }, progress::onEpisode), earlier);
+                Policy learner = network;
+                int roundNumber = r;
+                Dagger.Round round = dagger.round(r, actor, network, (a, requests) -> rollouts.run(requests.size(),
+                        roundTask(roundNumber, a, learner, requests, kept, set, workers, twinSims), progress::onEpisode), earlier);
                 round.episodes().forEach(e -> earlier.addAll(e.visits()));
+                set.sortEpisodes(); // the round's rows in episode order, however its episodes finished
                 double seconds = (System.nanoTime() - t0) * 1e-9;
                 savePolicy(round.policy(), r);
                 appendRound(round.stats(), seconds);
@@ -198,6 +210,57 @@ public final class DaggerRun {
             twinSims.forEach(Simulator::close);
         }
         out.println("wrote " + dir.resolve(POLICY) + ", " + ROUNDS + ", " + DEMONSTRATIONS);
+    }
+
+    /**
+     * Round {@code round}'s episodes as a rollout task: the episodes a killed run finished
+     * ({@code kept}) read back, the others played by the workers' environments (made once per
+     * worker) and appended to the demonstration set as they finish, by the driver alone; shipped
+     * to a cluster as {@link #shipper} makes them when there is one.
+     */
+    private RolloutTask<Simulator, Dagger.Episode> roundTask(int round, Function<double[], double[]> actor, Policy network,
+            List<Dagger.Request> requests, Map<Integer, List<Dagger.Visit>> kept, DemonstrationSet set,
+            Map<Simulator, TeachableThrowEnv> workers, List<Simulator> twinSims) {
+        RolloutTask<Simulator, Dagger.Episode> local = sim -> {
+            TeachableThrowEnv env = workers.computeIfAbsent(sim, s -> {
+                Simulator twin = twins.apply(s);
+                twinSims.add(twin);
+                return teachableEnv(config, learnerThrows(), envs, s, twin);
+            });
+            return i -> Dagger.play(env, requests.get(i), actor);
+        };
+        RecordedTask<Simulator, Dagger.Episode> recorded = new RecordedTask<>(local, DaggerEpisodes::toJson, DaggerEpisodes::fromJson,
+                new RecordedTask.Journal() {
+                    @Override
+                    public Optional<JsonNode> finished(int index) {
+                        Dagger.Request req = requests.get(index);
+                        return kept.containsKey(req.episode()) ? Optional.of(DaggerEpisodes.toJson(new Dagger.Episode(req, kept.get(req.episode()))))
+                                : Optional.empty();
+                    }
+
+                    @Override
+                    public void append(int index, JsonNode episode) {
+                        try {
+                            set.append(DaggerEpisodes.fromJson(episode));
+                        } catch (IOException ex) {
+                            throw new java.io.UncheckedIOException(ex);
+                        }
+                    }
+                });
+        return shipper == null ? recorded
+                : new ShippableTask<>(recorded, shipper.ship(round, network, requests, learnerThrows()), DaggerEpisodes::fromJson);
+    }
+
+    /**
+     * The environment a DAgger worker plays on {@code sim}: the task's throw environment with the
+     * twin-world teacher on {@code twin}, and the learner's decisions gated by {@code throwsOf}
+     * (lead-in policies throwing the others; null: every decision is the learner's).
+     */
+    public static TeachableThrowEnv teachableEnv(DaggerRunConfig config, DaggerRunConfig.LearnerThrows throwsOf, ThrowEnvFactory envs,
+            Simulator sim, Simulator twin) {
+        ThrowEnv throwEnv = envs.create(sim);
+        return new TeachableThrowEnv(throwEnv, new ThrowTeacher(config.teacher(), envs.tasks().get(), envs.space(), twin),
+                gate(throwsOf, throwEnv.task(), envs));
     }
 
     /**
@@ -261,6 +324,11 @@ public final class DaggerRun {
 
     /** The task's nominal throw from every state. */
     private Function<double[], double[]> nominalActor() {
+        return nominalActor(envs);
+    }
+
+    /** The nominal throw of {@code envs}' task from every state: round 0's learner when the run starts from none. */
+    public static Function<double[], double[]> nominalActor(ThrowEnvFactory envs) {
         double[] nominal = envs.space().toAction(envs.tasks().get().nominalThrow());
         return obs -> nominal.clone();
     }
@@ -302,8 +370,7 @@ public final class DaggerRun {
         String row = String.format(Locale.ROOT, "%d,%d,%d,%d,%.4f,%d,%d,%.3f,%d,%.6f,%.6f,%.1f%n", s.round(), s.episodes(), s.decisions(),
                 s.proposalSuccesses(), s.proposalSuccessRate(), s.labelled(), s.tries(), (double) s.tries() / Math.max(1, s.decisions()),
                 s.examples(), s.trainLoss(), s.validationLoss(), seconds);
-        Files.writeString(file, (Files.exists(file) ? "" : ROUNDS_HEADER + "\n") + row, StandardCharsets.UTF_8,
-                StandardOpenOption.CREATE, StandardOpenOption.APPEND);
+        Outputs.append(file, ((Files.exists(file) ? "" : ROUNDS_HEADER + "\n") + row).getBytes(StandardCharsets.UTF_8));
     }
 
     /** A progress line at most every few seconds within a round: episodes done, and the learner's successes so far. */

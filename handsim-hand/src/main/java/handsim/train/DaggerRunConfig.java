@@ -4,7 +4,7 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.learn.DaggerConfig;
 import handsim.planning.ThrowTeacher;
-import handsim.task.FlipTask;
+import handsim.task.Rest;
 import java.nio.file.Path;
 
 /**
@@ -18,20 +18,20 @@ public record DaggerRunConfig(TrainConfig.Run run, ThrowTeacher.Config teacher, 
 
     /**
      * A learner for one rest of a long object in the hand: it throws (and the teacher labels) only
-     * the throws after the first made from {@code rest} ({@link FlipTask.Rest}); the others are
+     * the throws after the first made from {@code rest} ({@link Rest}); the others are
      * thrown by the throw policy {@code leadIn} (files as the flip task's learned controller reads
      * them: {@code leadInOpening}, when not null, for each episode's first throw), and episodes are
      * cut off after throw number {@code maxLoops}. The files are named relative to handsim's folder;
      * a run reads them when it starts ({@link DaggerRun#start}, which refuses a missing one) and
      * copies them into its folder.
      */
-    public record LearnerThrows(FlipTask.Rest rest, Path leadIn, Path leadInOpening, int maxLoops) {
+    public record LearnerThrows(Rest rest, Path leadIn, Path leadInOpening, int maxLoops) {
 
         static LearnerThrows parse(Json j) {
             j.allow("comment");
-            FlipTask.Rest rest;
+            Rest rest;
             try {
-                rest = FlipTask.Rest.ofLabel(j.string("rest"));
+                rest = Rest.ofLabel(j.string("rest"));
             } catch (IllegalArgumentException e) {
                 throw j.fieldError("rest", e.getMessage());
             }

@@ -1,7 +1,6 @@
 package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.report.Outputs;
 import handsim.config.ConfigException;
 import handsim.config.Home;
 import handsim.config.Json;
@@ -9,8 +8,9 @@ import handsim.control.ThrowParameters;
 import handsim.control.ThrowPolicy;
 import handsim.control.ThrowSpace;
 import handsim.learn.Policy;
+import handsim.report.Outputs;
 import handsim.sim.ObjectSpec;
-import handsim.task.FlipTask;
+import handsim.task.Rest;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import java.io.IOException;
@@ -103,12 +103,12 @@ public record ThrowPolicyFile(String task, String object, StateVector.Encoding s
      * learnerThrows.rest} of its DAgger run's config ({@link DaggerRunConfig.LearnerThrows});
      * fails when it was trained for every throw.
      */
-    public FlipTask.Rest restServed() {
+    public Rest restServed() {
         var rest = provenance.path("config").path("learnerThrows").path("rest");
         if (!rest.isTextual()) {
             throw new IllegalArgumentException("it was trained for every throw, not one rest (its provenance has no config.learnerThrows.rest)");
         }
-        return FlipTask.Rest.ofLabel(rest.asText());
+        return Rest.ofLabel(rest.asText());
     }
 
     /**

@@ -2,10 +2,13 @@ package handsim.train;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
-import handsim.control.CatchStyle;
 import handsim.learn.LearnerConfig;
 import handsim.task.StateVector;
+import handsim.taskdef.TaskDefinitions;
 import java.nio.file.Path;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
 
 /**
  * A training run's configuration ({@code configs/train/*.json}): the {@code run} section says
@@ -32,35 +35,49 @@ public record TrainConfig(Run run, LearnerConfig learner) {
      *     SpinShaping}; {@link SpinShaping#NONE}, the paper's reward, when absent)
      * @param endAtFailedThrow a training episode ends at the first throw that is not a success of
      *     the task, as an evaluation episode does (false when absent: only a drop ends it)
-     * @param catchAfterThrow flip task only: how the catches after the hand's throws meet the
-     *     object while training, instead of as the task says ({@code catch}; null when absent: the
-     *     task's catch)
-     * @param armRest flip task only: the arm's redundancy is drawn toward the object's arm rest
-     *     while training, as the task says ({@code armRest} true); false, or absent, leaves it to the
-     *     IK, as the shipped can policies and every run folder without the field were trained
+     * @param taskSet fields of the task's file (configs/tasks/TASK.json) changed for this run, as
+     *     {@code evaluate --task-set} changes them ({@link handsim.config.Json#withOverrides}: dotted
+     *     paths, JSON values, {@code null} leaves an optional field out); empty: the task as its
+     *     file says
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
             double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
-            boolean endAtFailedThrow, CatchStyle catchAfterThrow, boolean armRest) {
+            boolean endAtFailedThrow, Map<String, String> taskSet) {
+
+        public Run {
+            taskSet = Collections.unmodifiableMap(new LinkedHashMap<>(taskSet));
+        }
 
         static Run parse(Json j) {
             j.allow("comment");
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.bool("endAtFailedThrow", false), j.has("catch") ? CatchStyle.parse(j.get("catch")) : null,
-                    j.bool("armRest", false));
+                    j.bool("endAtFailedThrow", false), taskSet(j));
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
-            if (r.catchAfterThrow != null && !r.task.equals("flip")) {
-                throw j.fieldError("catch", "only the flip task's catches can be set here, and the task is \"" + r.task + "\"");
-            }
-            if (r.armRest && !r.task.equals("flip")) {
-                throw j.fieldError("armRest", "only the flip task has an arm rest, and the task is \"" + r.task + "\"");
-            }
             j.requireNoUnknownFields();
             return r;
+        }
+
+        /**
+         * The run's {@code taskSet}. A run section without one, as run folders hold that name the flip
+         * task's catch ({@code catch}) and arm rest ({@code armRest}) in the run itself, reads as the
+         * fields of the task's file those stand for: its catch replaced by {@code catch}, and the arm
+         * rest left out unless {@code armRest} is true.
+         */
+        private static Map<String, String> taskSet(Json j) {
+            Map<String, String> fields = new LinkedHashMap<>();
+            if (j.has("taskSet")) {
+                Json set = j.get("taskSet");
+                for (String key : set.fieldNames()) {
+                    fields.put(key, set.node().get(key).toString());
+                }
+                return fields;
+            }
+            return TaskDefinitions.runFields(j.string("task"), j.string("object"), j.bool("armRest", false),
+                    j.has("catch") ? j.get("catch").node().toString() : null);
         }
     }
 
@@ -87,13 +104,8 @@ public record TrainConfig(Run run, LearnerConfig learner) {
         if (!run.endAtFailedThrow()) {
             runNode.remove("endAtFailedThrow");
         }
-        runNode.remove("catchAfterThrow");
-        if (!run.armRest()) {
-            runNode.remove("armRest");
-        }
-        if (run.catchAfterThrow() != null) {
-            runNode.set("catch", run.catchAfterThrow().toJson());
-        }
+        ObjectNode taskSet = runNode.putObject("taskSet");
+        run.taskSet().forEach((key, value) -> taskSet.set(key, Json.parse("taskSet." + key, value).node()));
         root.set("run", runNode);
         root.setAll(learner.toJson());
         return root;

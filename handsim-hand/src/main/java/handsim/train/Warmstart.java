@@ -6,8 +6,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.ActorPretraining;
 import handsim.learn.Cmaes;
+import handsim.learn.CmaesGenerations;
 import handsim.learn.DdpgAgent;
-import handsim.learn.Env;
 import handsim.learn.Policy;
 import handsim.learn.LearnerConfig;
 import handsim.report.Outputs;
@@ -82,32 +82,70 @@ public final class Warmstart {
     }
 
     /**
-     * Searches every initial condition on the rollout workers, starting each search from the
-     * task's nominal throw; results in seed order, printed as they come.
+     * Searches every initial condition, starting each search from the task's nominal throw: CMA-ES
+     * a generation at a time, the throws of a generation of every search on the rollout workers
+     * (shipped by {@code shipper} to a cluster, or null: this JVM's threads). A search's result is
+     * {@link Cmaes#minimize}'s for its initial condition; results in seed order, each printed once
+     * its search is over.
      */
-    public static List<Search> search(Config c, ThrowEnvFactory envs, double[] nominalAction, Rollouts<Simulator> rollouts, PrintStream out) {
+    public static List<Search> search(Config c, ThrowEnvFactory envs, double[] nominalAction, Rollouts<Simulator> rollouts,
+            WarmstartThrows.Shipper shipper, PrintStream out) {
         LearnerConfig.Cmaes cm = c.train().learner().cmaes();
         int n = c.warmstart().initialConditions();
         double[] lower = new double[nominalAction.length], upper = new double[nominalAction.length], sigma = new double[nominalAction.length];
         Arrays.fill(lower, -1);
         Arrays.fill(upper, 1);
         Arrays.fill(sigma, 2 * cm.initialSigma()); // the action range is 2 wide
-        return rollouts.run(n, sim -> {
-            ThrowEnv env = envs.create(sim);
-            return i -> {
-                long seed = c.warmstart().firstSeed() + i;
-                double[] state = env.reset(seed);
-                // one evaluation: the same initial condition, this throw, its reward (a deterministic function of the action)
-                Cmaes.Result r = Cmaes.minimize(new Cmaes.Problem(x -> {
-                    env.reset(seed);
-                    Env.Step step = env.step(x);
-                    return -step.reward();
-                }, nominalAction.clone(), sigma, lower, upper, cm.population(), cm.maxEvaluations(), seed));
-                double reward = -r.value();
-                return new Search(i, seed, state, r.point(), reward, r.evaluations(), reward >= c.warmstart().keepReward());
-            };
-        }, (i, s) -> out.printf(Locale.ROOT, "initial condition %d (seed %d): best reward %.3f after %d evaluations%s%n", i, s.seed(),
-                s.reward(), s.evaluations(), s.kept() ? ", kept" : ""));
+        CmaesGenerations[] searches = new CmaesGenerations[n];
+        double[][] states = new double[n][];
+        for (int i = 0; i < n; i++) {
+            // the objective is each throw's negated reward, a deterministic function of the action: evaluated by WarmstartThrows
+            searches[i] = new CmaesGenerations(new Cmaes.Problem(null, nominalAction.clone(), sigma, lower, upper, cm.population(),
+                    cm.maxEvaluations(), c.warmstart().firstSeed() + i));
+        }
+        WarmstartThrows throwsOf = new WarmstartThrows(envs);
+        Search[] found = new Search[n];
+        for (int generation = 0; ; generation++) {
+            List<WarmstartThrows.Candidate> candidates = new ArrayList<>();
+            int[] from = new int[n + 1];
+            for (int i = 0; i < n; i++) {
+                from[i] = candidates.size();
+                for (double[] x : searches[i].next()) {
+                    candidates.add(new WarmstartThrows.Candidate(c.warmstart().firstSeed() + i, x));
+                }
+                if (searches[i].done() && found[i] == null) {
+                    found[i] = finished(i, c, states[i], searches[i].result(), out);
+                }
+            }
+            from[n] = candidates.size();
+            if (candidates.isEmpty()) {
+                break;
+            }
+            int active = (int) java.util.stream.IntStream.range(0, n).filter(i -> from[i + 1] > from[i]).count();
+            out.printf(Locale.ROOT, "generation %d: %d throws of %d searches%n", generation, candidates.size(), active);
+            List<WarmstartThrows.Outcome> outcomes = rollouts.run(candidates.size(), throwsOf.task(generation, candidates, shipper));
+            for (int i = 0; i < n; i++) {
+                double[] values = new double[from[i + 1] - from[i]];
+                for (int j = 0; j < values.length; j++) {
+                    WarmstartThrows.Outcome o = outcomes.get(from[i] + j);
+                    values[j] = -o.reward();
+                    states[i] = o.state();
+                }
+                if (values.length > 0) {
+                    searches[i].tell(values);
+                }
+            }
+        }
+        return List.of(found);
+    }
+
+    private static Search finished(int i, Config c, double[] state, Cmaes.Result r, PrintStream out) {
+        long seed = c.warmstart().firstSeed() + i;
+        double reward = -r.value();
+        Search s = new Search(i, seed, state, r.point(), reward, r.evaluations(), reward >= c.warmstart().keepReward());
+        out.printf(Locale.ROOT, "initial condition %d (seed %d): best reward %.3f after %d evaluations%s%n", i, s.seed(),
+                s.reward(), s.evaluations(), s.kept() ? ", kept" : "");
+        return s;
     }
 
     /** Writes the kept searches as the dataset: seed, reward, the state entries and the action entries. */

@@ -7,7 +7,7 @@
  *
  * <p>Imports {@code handsim.math}, {@code handsim.config}, {@code handsim.sim} (the interface),
  * {@code handsim.control}, {@code handsim.task}, {@code handsim.evaluation} (seeded episodes),
- * {@code handsim.planning} (DAgger's teacher),
+ * {@code handsim.planning} (DAgger's teacher), {@code handsim.taskdef} (the tasks' run fields),
  * {@code handsim.rollout}, {@code handsim.learn} and {@code handsim.report}; never an engine,
  * LWJGL or picocli: the app wires the engine in.
  */

@@ -58,25 +58,25 @@ class EpisodeCheckpointTest {
     @Test
     void aHeightEpisodeContinuesBitForBit() {
         // a fixed goal: the twin shares the live episode's task, which a random goal would move on
-        ThrowTask height = TestSupport.tasks().height(HeightGoals.fixed(1.2));
+        ThrowTask height = TestSupport.configs().height().newTask(HeightGoals.fixed(1.2));
         assertContinuesBitForBit(evaluation(height, "sphere"), 3, null);
     }
 
     @Test
     void aBoxEpisodeContinuesBitForBit() {
-        assertContinuesBitForBit(evaluation(TestSupport.tasks().create("box", "sphere"), "sphere"), 4, null);
+        assertContinuesBitForBit(evaluation(TestSupport.configs().task("box").newTask("sphere"), "sphere"), 4, null);
     }
 
     @Test
     void aFlipEpisodeContinuesBitForBit() {
-        assertContinuesBitForBit(evaluation(TestSupport.tasks().create("flip", "can"), "can"), 5, null);
+        assertContinuesBitForBit(evaluation(TestSupport.configs().flip().newTask("can"), "can"), 5, null);
     }
 
     @Test
     void aPlannedFlipEpisodeContinuesBitForBit() {
         PlannerConfig oneTry = new PlannerConfig(List.of(new PlannerConfig.Round(2, 0.05)), 0.9, 0);
         try (Simulator planning = engine()) {
-            assertContinuesBitForBit(evaluation(TestSupport.tasks().create("flip", "can"), "can").planned(oneTry, planning), 5, planning);
+            assertContinuesBitForBit(evaluation(TestSupport.configs().flip().newTask("can"), "can").planned(oneTry, planning), 5, planning);
         }
     }
 

@@ -58,7 +58,7 @@ class EvaluationConfigTest {
     @Test
     void edgesAreCopiedInAndOut() {
         double[] edges = {0.04, 0.08};
-        var bins = new handsim.task.FlipTask.ReportBins(1, 5, edges);
+        var bins = new FlipReport.Bins(1, 5, edges);
         edges[0] = 1;
         bins.catchDistanceEdges()[1] = 1;
         assertArrayEquals(new double[] {0.04, 0.08}, bins.catchDistanceEdges(), 0, "the record's edges are its own");

@@ -35,7 +35,7 @@ class OpeningThrowTest {
     @Test
     void theOpeningIsAskedAtTheFirstThrowOnly() {
         ControllerConfig controller = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(controller.catchStyle()).withoutArmRest();
+        FlipTask task = TestSupport.configs().flip().newTask("can").catchingAs(controller.catchStyle()).withoutArmRest();
         List<Double> openingAsked = new ArrayList<>(), restAsked = new ArrayList<>();
         ThrowPolicy withOpening = ThrowPolicy.withOpening(obs -> {
             openingAsked.add(obs.time());

@@ -75,4 +75,32 @@ class DemonstrationSetTest {
         IOException e = assertThrows(IOException.class, set::read);
         assertTrue(e.getMessage().contains("line 5"), e.getMessage());
     }
+
+    @Test
+    void sortedEpisodesAreTheBytesOfEpisodesWrittenInOrder(@TempDir Path dir) throws IOException {
+        // workers (threads or a cluster's executors) finish a round's episodes in any order; once
+        // sorted, the files must be those of the same episodes written in (round, episode) order
+        List<Demonstration.Trial> trials = List.of(new Demonstration.Trial(new double[] {0.5, -0.5}, false, -0.02, new double[] {1.5}));
+        List<Dagger.Episode> inOrder = List.of(episode(0, 0, 2), episode(0, 1, 3), episode(1, 0, 1), episode(1, 1, 2), episode(1, 2, 3))
+                .stream().map(e -> new Dagger.Episode(e.request(), e.visits().stream().map(v -> new Dagger.Visit(v.observation(),
+                        v.proposal(), new Demonstration(v.label().action(), v.label().proposalSucceeded(), v.label().tries(),
+                                v.label().robustness(), trials))).toList())).toList();
+        DemonstrationSet ordered = new DemonstrationSet(dir.resolve("a.csv"), 3, 2, List.of("turn"));
+        for (Dagger.Episode e : inOrder) {
+            ordered.append(e);
+        }
+        DemonstrationSet shuffled = new DemonstrationSet(dir.resolve("b.csv"), 3, 2, List.of("turn"));
+        for (int i : new int[] {1, 0}) { // round 0 finished out of order, then sorted
+            shuffled.append(inOrder.get(i));
+        }
+        shuffled.sortEpisodes();
+        for (int i : new int[] {4, 2, 3}) {
+            shuffled.append(inOrder.get(i));
+        }
+        assertTrue(Files.mismatch(ordered.file(), shuffled.file()) >= 0, "before sorting, the rows are in the order episodes finished");
+        shuffled.sortEpisodes();
+        assertEquals(-1L, Files.mismatch(ordered.file(), shuffled.file()), "the demonstrations byte for byte");
+        assertEquals(-1L, Files.mismatch(ordered.trialsFile(), shuffled.trialsFile()), "the teacher's trials byte for byte");
+        assertEquals(List.of(0, 1, 2), List.copyOf(shuffled.read().get(1).keySet()), "read back by episode");
+    }
 }

@@ -1,13 +1,5 @@
 package handsim.planning;
 
-import handsim.evaluation.CatchEvaluation;
-import handsim.task.CatchLoopTest;
-import handsim.task.CatchThrowEpisode;
-import handsim.task.EpisodeLimits;
-import handsim.task.FlipTask;
-import handsim.task.LaunchDistribution;
-import handsim.task.LoopRecord;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
@@ -23,8 +15,14 @@ import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.control.Phase;
 import handsim.control.ThrowDecision;
+import handsim.evaluation.CatchEvaluation;
 import handsim.sim.Simulator;
 import handsim.sim.ode.IsolatedEngine;
+import handsim.task.CatchLoopTest;
+import handsim.task.CatchThrowEpisode;
+import handsim.task.EpisodeLimits;
+import handsim.task.LaunchDistribution;
+import handsim.task.LoopRecord;
 import java.util.List;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -71,12 +69,12 @@ class ThrowPlannerTest {
     private CatchEvaluation nominalFlip(String object) {
         return CatchEvaluation.nominal(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object),
-                ((FlipTask) TestSupport.tasks().create("flip", object)).catchingAs(controller.catchStyle()).withoutArmRest());
+                TestSupport.configs().flip().newTask(object).catchingAs(controller.catchStyle()).withoutArmRest());
     }
 
     /** The nominal flip of {@code object}, its catch as {@code catching} says (null: the controller's own). */
     private static ThrowDecision nominalThrow(String object, CatchStyle catching) {
-        return new ThrowDecision(TestSupport.tasks().create("flip", object).nominalThrow(), catching);
+        return new ThrowDecision(TestSupport.configs().flip().newTask(object).nominalThrow(), catching);
     }
 
     private static Simulator engine() {

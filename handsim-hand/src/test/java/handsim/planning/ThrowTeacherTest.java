@@ -49,7 +49,7 @@ class ThrowTeacherTest {
     @Test
     void aSuccessfulThrowIsItsOwnLabelAndAFailedOneGetsTheNearestThatWorks() {
         // caught as the controller catches, no arm rest, as in ThrowPlannerTest, where the seed was measured
-        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(controller.catchStyle()).withoutArmRest();
+        FlipTask task = TestSupport.configs().flip().newTask("can").catchingAs(controller.catchStyle()).withoutArmRest();
         ThrowSpace space = task.throwSpace(controller.throwSpace());
         double[] nominal = space.toAction(task.nominalThrow());
         CatchEvaluation evaluation = new CatchEvaluation(controller, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),

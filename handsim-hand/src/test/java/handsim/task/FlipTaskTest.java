@@ -19,7 +19,6 @@ import handsim.control.Phase;
 import handsim.math.EndOverEnd;
 import handsim.math.Vec3;
 import java.nio.file.Files;
-import java.util.List;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -31,205 +30,57 @@ import org.junit.jupiter.api.Test;
 @Tag("fast")
 class FlipTaskTest {
 
-    private final FlipTask can = (FlipTask) TestSupport.tasks().create("flip", "can");
-    private final FlipTask club = (FlipTask) TestSupport.tasks().create("flip", "club");
+    private final FlipTask can = TestSupport.configs().flip().newTask("can");
+    private final FlipTask club = TestSupport.configs().flip().newTask("club");
     private final Vec3 target = TestSupport.neutralPalm().plus(new Vec3(0, 0.12, 0));
-    /** The bins of configs/evaluation.json's flipBins: 15 deg, throws 2-5 early, edges 4 and 8 cm. */
-    private static final FlipTask.ReportBins BINS = new FlipTask.ReportBins(Math.toRadians(15), 5, new double[] {0.04, 0.08});
-
-    private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where) {
-        return flight(rotationDeg, caught, where, caught ? 10 : Double.NaN);
-    }
-
-    private static LoopRecord flight(double rotationDeg, boolean caught, Vec3 where, double catchTiltDeg) {
-        return new LoopRecord(1, caught, 1.3, caught ? null : where, Double.NaN, null, false, Double.NaN,
-                Math.toRadians(rotationDeg), Double.NaN, Math.toRadians(catchTiltDeg), Double.NaN,
-                caught ? where : null, Double.NaN, 0, 0, 0, 1);
-    }
 
     @Test
     void flipsAreCountedInWholeFlipAnglesWithTheTolerance() {
         // can: 180 deg a flip, counted from 135 deg on
-        assertEquals(0, can.flips(flight(0, true, target)));
-        assertEquals(0, can.flips(flight(130, true, target)), "a near miss: 5 deg short of the tolerance");
-        assertEquals(1, can.flips(flight(140, true, target)));
-        assertEquals(1, can.flips(flight(180, true, target)));
-        assertEquals(2, can.flips(flight(360, true, target)), "two half turns");
+        assertEquals(0, can.flips(ScriptedLoops.flight(0, true, target)));
+        assertEquals(0, can.flips(ScriptedLoops.flight(130, true, target)), "a near miss: 5 deg short of the tolerance");
+        assertEquals(1, can.flips(ScriptedLoops.flight(140, true, target)));
+        assertEquals(1, can.flips(ScriptedLoops.flight(180, true, target)));
+        assertEquals(2, can.flips(ScriptedLoops.flight(360, true, target)), "two half turns");
         // club: a whole turn brings the handle back
-        assertEquals(0, club.flips(flight(180, true, target)));
-        assertEquals(1, club.flips(flight(320, true, target)));
-        assertEquals(2, club.flips(flight(720, true, target)));
+        assertEquals(0, club.flips(ScriptedLoops.flight(180, true, target)));
+        assertEquals(1, club.flips(ScriptedLoops.flight(320, true, target)));
+        assertEquals(2, club.flips(ScriptedLoops.flight(720, true, target)));
         assertEquals(0, can.flips(new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
                 Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1)), "the throw-in is no flip");
-    }
-
-    @Test
-    void throwsAreBinnedByFlightRotationInQuarterFlips() {
-        // can: quarters of its 180 deg flip, 45 deg wide; the throw-in and a throw with no measured flight are left out
-        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
-        var bins = can.byFlightRotation(List.of(throwIn, flight(10, true, target), flight(200, true, target),
-                flight(210, true, target), flight(220, false, target), flight(Double.NaN, true, target)));
-        assertEquals(5, bins.size(), "0-45 up to 180-225, the empty bins between included");
-        assertEquals(Math.toRadians(180), bins.get(4).from(), 1e-12);
-        assertEquals(Math.toRadians(225), bins.get(4).to(), 1e-12);
-        assertEquals(1, bins.get(0).throwsMade());
-        assertEquals(0, bins.get(0).successes(), "10 deg is no flip");
-        assertEquals(0, bins.get(2).throwsMade());
-        assertEquals(3, bins.get(4).throwsMade());
-        assertEquals(2, bins.get(4).successes(), "the dropped one is no success");
-        assertTrue(can.byFlightRotation(List.of(throwIn)).isEmpty());
-    }
-
-    private static LoopRecord arriving(double arrivalDeg, boolean caught, double catchTiltDeg) {
-        return new LoopRecord(1, caught, 1.3, caught ? null : Vec3.ZERO, Double.NaN, null, false, Double.NaN, Math.PI,
-                Double.NaN, caught ? Math.toRadians(catchTiltDeg) : Double.NaN, Double.NaN,
-                Vec3.ZERO, Math.toRadians(arrivalDeg), 0, 0, 0, 1);
-    }
-
-    @Test
-    void throwsAreBinnedByHowFarTheAxisStoodOutOfTheHorizontalWhenTheObjectCameBack() {
-        // six 15 deg bins from lying (0) to end-first (90), empty ones included; a throw that never came back
-        // to the hand (NaN) and the throw-in are left out
-        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, Double.NaN, null, Math.toRadians(10), 0, 0, 0, 1);
-        var bins = can.byArrivalTilt(List.of(throwIn, arriving(5, true, 10), arriving(14, false, 0), arriving(70, true, 80),
-                arriving(89, false, 0), arriving(90, true, 85), arriving(Double.NaN, false, 0)), BINS);
-        assertEquals(6, bins.size());
-        assertEquals(Math.toRadians(75), bins.get(5).from(), 1e-12);
-        assertEquals(Math.toRadians(90), bins.get(5).to(), 1e-12);
-        assertEquals(new FlipTask.ArrivalBin(0, Math.toRadians(15), 2, 1, 1, 0), bins.get(0), "a flip caught lying, a drop");
-        assertEquals(0, bins.get(1).throwsMade());
-        assertEquals(1, bins.get(4).standing(), "70 deg: caught standing 80 deg out of the palm");
-        assertEquals(2, bins.get(5).throwsMade(), "exactly end-first counts in the last bin");
-        assertEquals(1, bins.get(5).drops());
-        assertEquals(1, bins.get(5).standing());
-    }
-
-    @Test
-    void eachFailedThrowFailsForOneReasonTheEndFirstArrivalFirst() {
-        // configs/tasks/flip.json: a failed throw that came back with its axis 60 deg or more out of the
-        // horizontal arrived end-first, whatever the catch did; otherwise the catch's outcome names it
-        assertEquals(java.util.Optional.empty(), can.failure(arriving(10, true, 10)), "flipped (180 deg) and caught lying");
-        assertEquals(FlipTask.Failure.ARRIVED_END_FIRST, can.failure(arriving(70, true, 80)).orElseThrow());
-        assertEquals(FlipTask.Failure.ARRIVED_END_FIRST, can.failure(arriving(60, false, 0)).orElseThrow(), "60 deg is end-first");
-        assertEquals(FlipTask.Failure.DROPPED, can.failure(arriving(59, false, 0)).orElseThrow());
-        assertEquals(FlipTask.Failure.DROPPED, can.failure(flight(180, false, target)).orElseThrow(), "never came back (NaN)");
-        assertEquals(FlipTask.Failure.CAUGHT_STANDING, can.failure(arriving(40, true, 50)).orElseThrow());
-        assertEquals(FlipTask.Failure.NO_FLIP, can.failure(flight(90, true, target, 10)).orElseThrow());
-        LoopRecord throwIn = new LoopRecord(0, true, Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, Double.NaN, Double.NaN, null, Double.NaN, 0, 0, 0, 1);
-        FlipTask.ThrowTally t = can.tally(List.of(throwIn, arriving(10, true, 10), arriving(70, true, 80), arriving(59, false, 0),
-                flight(90, true, target, 10), arriving(5, true, 20)));
-        assertEquals(5, t.throwsMade(), "the throw-in is no throw");
-        assertEquals(2, t.successes());
-        assertEquals(0.4, t.successRate(), 1e-12);
-        assertEquals(java.util.Map.of(FlipTask.Failure.ARRIVED_END_FIRST, 1, FlipTask.Failure.DROPPED, 1,
-                FlipTask.Failure.CAUGHT_STANDING, 0, FlipTask.Failure.NO_FLIP, 1), t.failures());
-    }
-
-    @Test
-    void firstThrowsAreBinnedByTheHeadingTheThrowInRestedAt() {
-        // six 15-degree bins from 0 (across the palm) to 90 (along the fingers); 90 itself falls in the last
-        List<FlipTask.AngleBin> bins = can.firstThrowsByRestHeading(List.of(
-                List.of(restingAt(5), flight(180, true, target)),
-                List.of(restingAt(10), flight(90, true, target), flight(180, true, target)),
-                List.of(restingAt(50), flight(180, true, target)),
-                List.of(restingAt(90), flight(180, false, target)),
-                List.of(restingAt(Double.NaN)),
-                List.of(restingAt(20))), BINS);
-        assertEquals(6, bins.size());
-        assertEquals(Math.toRadians(45), bins.get(3).from(), 1e-12);
-        assertEquals(Math.toRadians(60), bins.get(3).to(), 1e-12);
-        int[] made = bins.stream().mapToInt(FlipTask.AngleBin::throwsMade).toArray();
-        int[] succeeded = bins.stream().mapToInt(FlipTask.AngleBin::successes).toArray();
-        // only loop 1 counts (episode 2's second throw is left out); a dropped throw-in or one not thrown from is no first throw
-        assertArrayEquals(new int[] {2, 0, 0, 1, 0, 1}, made);
-        assertArrayEquals(new int[] {1, 0, 0, 1, 0, 0}, succeeded);
-    }
-
-    @Test
-    void laterThrowsAreCountedByTheRestTheCatchBeforeThemLeft() {
-        // flat: under 10 deg out of the palm's plane; askew: 5 deg or more from across the palm
-        // (FlipTask.FLAT_REST, ASKEW_REST); throws 2-5 are early, from the 6th later; the first
-        // throw (from the throw-in) is not counted, nor a throw after a catch with no tilt measured
-        LoopRecord raisedAcross = caughtResting(15, 2), flatAskew = caughtResting(5, 8), flatAcross = caughtResting(9.9, 4.9),
-                raisedAskew = caughtResting(10, 5), dropped = flight(180, false, target), failed = flight(90, true, target, 10);
-        List<LoopRecord> episode = List.of(restingAt(0), raisedAcross, flatAskew, failed);
-        List<LoopRecord> longer = List.of(restingAt(0), flatAskew, raisedAcross, dropped, raisedAskew, flatAcross, flatAskew,
-                raisedAcross);
-        List<FlipTask.RestCount> counts = can.laterThrowsByRest(List.of(episode, longer), BINS);
-        assertEquals(List.of(FlipTask.Rest.values()), counts.stream().map(FlipTask.RestCount::rest).toList(), "all four rests, in order");
-        // episode: throw 2 from raised-across succeeds, throw 3 from flat-askew fails (no flip);
-        // longer: throw 2 from flat-askew succeeds, 3 from raised-across is dropped, 4 follows the drop
-        // (no rest: left out), 5 from raised-askew (10 deg is not flat, 5 deg is askew) succeeds,
-        // 6 from flat-across (9.9, 4.9 deg) and 7 from flat-askew succeed as later throws
-        assertEquals(List.of(new FlipTask.ThrowsAfter(2, 1, 0, 0), new FlipTask.ThrowsAfter(1, 1, 0, 0), new FlipTask.ThrowsAfter(0, 0, 1, 1),
-                new FlipTask.ThrowsAfter(2, 1, 1, 1)), counts.stream().map(FlipTask.RestCount::throwsAfter).toList());
-    }
-
-    @Test
-    void laterThrowsAreCountedByHowFarFromTheRunsMedianCatchTheCatchBeforeThemWas() {
-        // a flip caught at target + (dx, dy, dz); the median of the hand's catches is the target
-        // (x offsets 0 0 0 0 0 .01 .10 and z 0 ... .05: medians 0); only the horizontal distance
-        // counts (BINS: under 4 cm, 4-8 cm, 8 cm and over); throws 2-5
-        // are early, from the 6th later; the throw after a drop (no catch point) is left out
-        LoopRecord near = flight(180, true, target), raisedBeside = flight(180, true, target.plus(new Vec3(0.01, 0.3, 0))),
-                mid = flight(180, true, target.plus(new Vec3(0, 0, 0.05))), far = flight(180, true, target.plus(new Vec3(0.10, 0, 0))),
-                failed = flight(90, true, target), dropped = flight(180, false, target);
-        List<LoopRecord> episode = List.of(restingAt(0), near, raisedBeside, mid, far, failed, near, dropped, near);
-        FlipTask.CatchDistances d = can.laterThrowsByCatchDistance(List.of(episode), BINS).orElseThrow();
-        assertEquals(0, d.medianCatch().minus(target).norm(), 1e-12, "the median of each coordinate");
-        assertEquals(List.of(new FlipTask.DistanceCount(0, 0.04, new FlipTask.ThrowsAfter(2, 2, 2, 1)),
-                new FlipTask.DistanceCount(0.04, 0.08, new FlipTask.ThrowsAfter(1, 1, 0, 0)),
-                new FlipTask.DistanceCount(0.08, Double.POSITIVE_INFINITY, new FlipTask.ThrowsAfter(1, 0, 0, 0))), d.bins());
-        assertTrue(can.laterThrowsByCatchDistance(List.of(List.of(restingAt(0)), List.of(restingAt(Double.NaN))), BINS).isEmpty(),
-                "no catch of the hand's own: nothing to measure from");
-    }
-
-    /** A flip caught and resting {@code tiltDeg} out of the palm's plane, {@code headingDeg} from across it. */
-    private LoopRecord caughtResting(double tiltDeg, double headingDeg) {
-        return new LoopRecord(1, true, 1.3, null, Double.NaN, null, false, Double.NaN, Math.PI, Double.NaN, Math.toRadians(tiltDeg),
-                Math.toRadians(headingDeg), target, Double.NaN, 0, 0, 0, 1);
-    }
-
-    /** A caught throw-in resting at {@code headingDeg} in the palm (NaN: dropped). */
-    private static LoopRecord restingAt(double headingDeg) {
-        return new LoopRecord(0, !Double.isNaN(headingDeg), Double.NaN, null, Double.NaN, null, false, Double.NaN, Double.NaN,
-                Double.NaN, 10, Math.toRadians(headingDeg), null, Double.NaN, 0, 0, 0, 1);
     }
 
     @Test
     void rewardFollowsEquation7() {
         Vec3 off = target.plus(new Vec3(0.05, 0, 0));
         // flipped and caught 5 cm from p_d: exp(-10 * 0.05) + r_flip
-        assertEquals(Math.exp(-0.5) + 1, can.reward(flight(180, true, off)), 1e-12);
-        assertTrue(can.success(flight(180, true, off)));
+        assertEquals(Math.exp(-0.5) + 1, can.reward(ScriptedLoops.flight(180, true, off)), 1e-12);
+        assertTrue(can.success(ScriptedLoops.flight(180, true, off)));
         // caught without a flip: the miss term, -0.1 |p_p - p_d|
-        assertEquals(-0.1 * 0.05, can.reward(flight(20, true, off)), 1e-12);
-        assertFalse(can.success(flight(20, true, off)));
+        assertEquals(-0.1 * 0.05, can.reward(ScriptedLoops.flight(20, true, off)), 1e-12);
+        assertFalse(can.success(ScriptedLoops.flight(20, true, off)));
         // flipped but dropped 1 m away
         Vec3 ground = target.plus(new Vec3(0, 0, 1));
-        assertEquals(-0.1 * 1, can.reward(flight(200, false, ground)), 1e-12);
+        assertEquals(-0.1 * 1, can.reward(ScriptedLoops.flight(200, false, ground)), 1e-12);
     }
 
     @Test
     void aFlipCountsOnlyWhenTheObjectIsCaughtLyingInTheHand() {
         // configs/tasks/flip.json: the long axis at most 45 deg out of the palm's plane (a flip is caught "aligned with the palm")
-        assertTrue(can.success(flight(180, true, target, 0)), "lying flat in the palm");
-        assertTrue(can.success(flight(180, true, target, 44)), "1 deg inside the tilt allowed");
-        assertFalse(can.success(flight(180, true, target, 46)), "1 deg past it: leaning on the fingers");
-        assertFalse(can.success(flight(180, true, target, 85)), "standing on end in the palm");
-        assertTrue(can.properCatch(flight(20, true, target, 30)), "a catch without a flip can still be proper");
-        assertFalse(can.properCatch(flight(180, false, target)), "a drop is no catch");
+        assertTrue(can.success(ScriptedLoops.flight(180, true, target, 0)), "lying flat in the palm");
+        assertTrue(can.success(ScriptedLoops.flight(180, true, target, 44)), "1 deg inside the tilt allowed");
+        assertFalse(can.success(ScriptedLoops.flight(180, true, target, 46)), "1 deg past it: leaning on the fingers");
+        assertFalse(can.success(ScriptedLoops.flight(180, true, target, 85)), "standing on end in the palm");
+        assertTrue(can.properCatch(ScriptedLoops.flight(20, true, target, 30)), "a catch without a flip can still be proper");
+        assertFalse(can.properCatch(ScriptedLoops.flight(180, false, target)), "a drop is no catch");
         // eq. (7): a flip caught standing scores as a miss, -0.1 |p_p - p_d|
         Vec3 off = target.plus(new Vec3(0.05, 0, 0));
-        assertEquals(-0.1 * 0.05, can.reward(flight(180, true, off, 80)), 1e-12);
+        assertEquals(-0.1 * 0.05, can.reward(ScriptedLoops.flight(180, true, off, 80)), 1e-12);
     }
 
     @Test
     void anObjectTheConfigDoesNotListIsRefused() {
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TestSupport.tasks().create("flip", "sphere"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TestSupport.configs().flip().newTask("sphere"));
         assertTrue(e.getMessage().contains("sphere") && e.getMessage().contains("can"), e.getMessage());
     }
 
@@ -286,8 +137,8 @@ class FlipTaskTest {
         double e = Math.toRadians(30), rate = 3 * 2 * Math.PI;
         double turn = trackedTurn(t -> new Vec3(Math.cos(e) * Math.cos(rate * t), Math.sin(e), Math.cos(e) * Math.sin(rate * t)), 0.6);
         assertEquals(Math.sin(2 * e) * Math.abs(Math.sin(Math.PI * 1.8)), turn, 0.01, "the closed form, to the ticks' chord error");
-        assertEquals(0, can.flips(flight(Math.toDegrees(turn), true, target)), "a wobble is no can flip");
-        assertEquals(0, club.flips(flight(Math.toDegrees(turn), true, target)));
+        assertEquals(0, can.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)), "a wobble is no can flip");
+        assertEquals(0, club.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)));
     }
 
     @Test
@@ -295,7 +146,7 @@ class FlipTaskTest {
         // the long axis horizontal, spun about the vertical like a propeller at 20 rad/s for 0.6 s (nearly 2 turns)
         double turn = trackedTurn(t -> new Vec3(Math.cos(20 * t), 0, Math.sin(20 * t)), 0.6);
         assertEquals(0, turn, 1e-9, "every tick turns about the vertical");
-        assertEquals(0, can.flips(flight(Math.toDegrees(turn), true, target)));
+        assertEquals(0, can.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)));
     }
 
     @Test
@@ -303,8 +154,8 @@ class FlipTaskTest {
         // end over end about the horizontal z axis at pi / 0.5 s: half a turn in 0.5 s of flight
         double turn = trackedTurn(t -> rotatedAboutZ(Math.PI * t / 0.5), 0.5);
         assertEquals(Math.PI, turn, 1e-9);
-        assertEquals(1, can.flips(flight(Math.toDegrees(turn), true, target)), "end for end is the same can");
-        assertEquals(0, club.flips(flight(Math.toDegrees(turn), true, target)), "the club's handle points away");
+        assertEquals(1, can.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)), "end for end is the same can");
+        assertEquals(0, club.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)), "the club's handle points away");
     }
 
     @Test
@@ -314,8 +165,8 @@ class FlipTaskTest {
         Vec3 start = axis.cross(Vec3.Y); // horizontal, square to the turn axis
         double turn = trackedTurn(t -> handsim.math.Quat.fromAxisAngle(axis, 2 * Math.PI * t / 0.6).rotate(start), 0.6);
         assertEquals(2 * Math.PI, turn, 1e-9);
-        assertEquals(1, club.flips(flight(Math.toDegrees(turn), true, target)), "the handle comes back to the hand");
-        assertEquals(2, can.flips(flight(Math.toDegrees(turn), true, target)), "two half turns of a can");
+        assertEquals(1, club.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)), "the handle comes back to the hand");
+        assertEquals(2, can.flips(ScriptedLoops.flight(Math.toDegrees(turn), true, target)), "two half turns of a can");
     }
 
     @Test
@@ -470,16 +321,16 @@ class FlipTaskTest {
     /**
      * The rest read from a decision's observation: the long axis's tilt out of the palm's plane
      * (palm y: its normal) and heading from across it (palm z), in a palm turned 30 deg about its
-     * normal so that the palm's frame, not the world's, decides; the thresholds are FLAT_REST and
-     * ASKEW_REST.
+     * normal so that the palm's frame, not the world's, decides; the thresholds are Rest.FLAT_TILT and
+     * ASKEW_HEADING.
      */
     @Test
     void theRestAtADecisionIsReadInThePalmsFrame() {
         handsim.math.Quat palmTurn = handsim.math.Quat.fromAxisAngle(new Vec3(0, 1, 0), Math.toRadians(30));
         handsim.kin.Frame palm = new handsim.kin.Frame(Vec3.ZERO, palmTurn);
         Vec3 longAxis = new Vec3(0, 0, 1); // the can's, in its own frame
-        FlipTask.Rest[] expected = {FlipTask.Rest.FLAT_ACROSS, FlipTask.Rest.FLAT_ASKEW, FlipTask.Rest.RAISED_ACROSS,
-                FlipTask.Rest.RAISED_ASKEW};
+        Rest[] expected = {Rest.FLAT_ACROSS, Rest.FLAT_ASKEW, Rest.RAISED_ACROSS,
+                Rest.RAISED_ASKEW};
         double[][] tiltHeadingDeg = {{3, 2}, {3, 20}, {25, 2}, {25, 20}};
         for (int i = 0; i < expected.length; i++) {
             double tilt = Math.toRadians(tiltHeadingDeg[i][0]), heading = Math.toRadians(tiltHeadingDeg[i][1]);
@@ -491,10 +342,10 @@ class FlipTaskTest {
             LyingPose pose = LyingPose.of(palm, can.rotate(longAxis));
             assertEquals(tilt, pose.tilt(), 1e-9, "tilt " + i);
             assertEquals(heading, pose.heading(), 1e-9, "heading " + i);
-            assertEquals(expected[i], FlipTask.Rest.at(at, longAxis), "rest " + i);
+            assertEquals(expected[i], Rest.at(at, longAxis), "rest " + i);
         }
-        assertEquals(FlipTask.Rest.FLAT_ASKEW, FlipTask.Rest.ofLabel("flat_askew"));
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> FlipTask.Rest.ofLabel("flat"));
+        assertEquals(Rest.FLAT_ASKEW, Rest.ofLabel("flat_askew"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Rest.ofLabel("flat"));
         assertTrue(e.getMessage().contains("\"flat\"") && e.getMessage().contains("flat_askew"), e.getMessage());
     }
 }

@@ -7,12 +7,12 @@ import handsim.TestSupport;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.ControllerConfig;
+import handsim.evaluation.CatchEvaluation;
+import handsim.evaluation.HeightErrors;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
-import handsim.evaluation.CatchEvaluation;
 import handsim.task.EpisodeLimits;
 import handsim.task.EpisodeResult;
-import handsim.evaluation.HeightErrors;
 import handsim.task.LaunchDistribution;
 import handsim.task.LoopRecord;
 import handsim.task.ThrowTask;
@@ -75,7 +75,7 @@ class ShippedPoliciesTest {
     /** An evaluation of {@code task} with {@code object} thrown by the shipped policy (and its opening, when one ships). */
     static CatchEvaluation evaluation(String task, String object) {
         ControllerConfig cc = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        ThrowTask t = TestSupport.tasks().create(task, object);
+        ThrowTask t = TestSupport.configs().task(task).newTask(object);
         Path file = ThrowPolicyFile.shipped(task, object);
         return new CatchEvaluation(cc, EpisodeLimits.parse(Json.load(Home.resolve("configs/episode.json"))),
                 LaunchDistribution.load(Home.resolve("configs/launch.json")), TestSupport.object(object), t,

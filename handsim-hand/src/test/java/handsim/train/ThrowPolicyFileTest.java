@@ -89,12 +89,12 @@ class ThrowPolicyFileTest {
 
     /**
      * A rest policy (trained by a DAgger run with learnerThrows.rest) makes the later throws from
-     * that rest and no others, read from the decision's observation (FlipTask.Rest.at); a file
+     * that rest and no others, read from the decision's observation (Rest.at); a file
      * naming no known rest is refused as the rest policy's.
      */
     @Test
     void aRestPolicyMakesTheLaterThrowsFromItsRestAlone(@TempDir Path dir) throws Exception {
-        handsim.task.ThrowTask flip = TestSupport.tasks().create("flip", "can");
+        handsim.task.ThrowTask flip = TestSupport.configs().flip().newTask("can");
         handsim.sim.ObjectSpec can = TestSupport.object("can");
         int n = StateVector.Encoding.CONTINUOUS.baseSize() + flip.goalSize();
         com.fasterxml.jackson.databind.node.ObjectNode provenance = Json.mapper().createObjectNode();
@@ -103,7 +103,7 @@ class ThrowPolicyFileTest {
                 randomActor(n, 5), Json.mapper().createObjectNode());
         ThrowPolicyFile rest = new ThrowPolicyFile("flip", "can", StateVector.Encoding.CONTINUOUS, flip.throwSpace(cc.throwSpace()),
                 randomActor(n, 6), provenance);
-        assertEquals(handsim.task.FlipTask.Rest.FLAT_ASKEW, rest.restServed());
+        assertEquals(handsim.task.Rest.FLAT_ASKEW, rest.restServed());
         handsim.control.ThrowPolicy both = ThrowPolicyFile.throwPolicy(usual, null, null, rest, dir.resolve("rest.json"), flip, can, null);
         handsim.math.Vec3 axis = can.longAxis().orElseThrow();
         for (double headingDeg : new double[] {2, 20}) { // flat (3 deg out of the palm's plane), across / askew

@@ -1,7 +1,5 @@
 package handsim.train;
 
-import handsim.sim.Simulator;
-
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -11,19 +9,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.TestSupport;
-import handsim.config.Home;
 import handsim.config.ConfigException;
+import handsim.config.ConfigSet;
+import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
 import handsim.learn.EpisodeStats;
 import handsim.learn.MetricsCsv;
-import handsim.math.Vec3;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
+import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
+import handsim.spec.RunConfigs;
 import handsim.task.FlipTask;
 import handsim.task.StateVector;
+import handsim.taskdef.TaskDefinitions;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -193,60 +194,51 @@ class TrainRunTest {
         assertEquals(ending, TrainConfig.parse(Json.of("saved", ending.toJson())), "the run folder's config gives it back");
     }
 
-    @Test
-    void aFlipRunMayCatchAsItsConfigSaysAndOnlyAFlipRun() {
-        // configs/train/flip.json trains with the controller's own catch (the shipped can policy
-        // was trained so), not the task's level catch; the run folder's copy keeps it
-        Path file = Home.resolve("configs/train/flip.json");
-        TrainConfig flip = TrainConfig.load(file);
-        assertEquals(new CatchStyle(0, 0.7), flip.run().catchAfterThrow());
-        assertEquals(flip, TrainConfig.parse(Json.of("saved", flip.toJson())), "the run folder's config gives it back");
-        FlipTask task = ((FlipTask) TestSupport.tasks().create("flip", "can")).catchingAs(flip.run().catchAfterThrow());
-        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        assertEquals(new CatchStyle(0, 0.7), task.controller(base).catchAfterThrow().orElseThrow(), "the task catches as the run says");
-
-        TrainConfig level = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), Json.load(file).node(),
-                Map.of("run.catch", "{\"planeShift\": 0, \"velocityFraction\": 0.7, \"level\": {\"below\": 0.15, \"above\": 0, "
-                        + "\"step\": 0.01, \"tiltDeg\": 15, \"minTurnDeg\": 143, \"turnTiltDeg\": 25}, \"offset\": [0, 0, -0.0075]}"))));
-        assertEquals(new CatchStyle(0, 0.7, new CatchStyle.Level(0.15, 0, 0.01, Math.toRadians(15), Math.toRadians(143),
-                Math.toRadians(25)), new Vec3(0, 0, -0.0075)),
-                level.run().catchAfterThrow(), "--set gives the run the task's level catch (configs/train/README.md)");
-        assertEquals(level, TrainConfig.parse(Json.of("saved", level.toJson())), "and its folder's config keeps it");
-
-        Path height = Home.resolve("configs/train/height.json");
-        ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
-        ((ObjectNode) node.get("run")).set("catch", flip.toJson().get("run").get("catch"));
-        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(Json.of("height", node)));
-        assertTrue(e.getMessage().contains("catch") && e.getMessage().contains("height"), e.getMessage());
+    /** The flip task a run trains on: the task's file with the run's taskSet applied. */
+    private static FlipTask flipTaskOf(TrainConfig.Run run) {
+        return new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file("flip"), run.taskSet()))).flip().newTask("can");
     }
 
     @Test
-    void theShippedFlipRunsLeaveOutTheArmRestAsTheirPoliciesWereTrained() {
-        // configs/tasks/flip.json draws the can's arm toward its arm rest after each throw; the shipped can policies were
-        // trained without it, so their configs (configs/train/flip*.json) leave it out, and the run folder keeps that
-        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
-        FlipTask task = (FlipTask) TestSupport.tasks().create("flip", "can");
-        assertTrue(task.controller(base).armRest().isPresent(), "the task's can has an arm rest");
-        for (String name : new String[] {"flip", "flip-opening", "flip-warmstart", "flip-dagger"}) {
-            assertFalse(TrainConfig.Run.parse(Json.load(Home.resolve("configs/train/" + name + ".json")).get("run")).armRest(), name);
-        }
-        TrainConfig flip = TrainConfig.load(Home.resolve("configs/train/flip.json"));
+    void aFlipRunCatchesAndRestsAsItsTaskSetSays() {
+        // configs/train/flip.json trains with the controller's own catch (the shipped can policy was trained so), not the
+        // task's level catch, and without the can's arm rest: both as fields of the task's file changed; the folder keeps them
+        Path file = Home.resolve("configs/train/flip.json");
+        TrainConfig flip = TrainConfig.load(file);
         assertEquals(flip, TrainConfig.parse(Json.of("saved", flip.toJson())), "the run folder's config gives it back");
-        assertTrue(task.withoutArmRest().controller(base).armRest().isEmpty());
-        assertEquals(task.controller(base).catchAfterThrow(), task.withoutArmRest().controller(base).catchAfterThrow(),
-                "the catch stays the task's");
+        ControllerConfig base = ControllerConfig.load(Home.resolve("configs/controller.json"));
+        FlipTask trained = flipTaskOf(flip.run());
+        assertEquals(new CatchStyle(0, 0.7), trained.controller(base).catchAfterThrow().orElseThrow(), "the task catches as the run says");
+        assertTrue(trained.controller(base).armRest().isEmpty(), "and leaves the arm to the IK");
+        assertTrue(TestSupport.configs().flip().newTask("can").controller(base).armRest().isPresent(), "the task's can has an arm rest");
+        for (String name : new String[] {"flip", "flip-opening", "flip-warmstart", "flip-dagger"}) {
+            TrainConfig.Run run = TrainConfig.Run.parse(Json.load(Home.resolve("configs/train/" + name + ".json")).get("run"));
+            assertTrue(flipTaskOf(run).controller(base).armRest().isEmpty(), name + ": the shipped can policies were trained without it");
+        }
+        TrainConfig resting = TrainConfig.parse(Json.of("set", Json.withOverrides(file.toString(), Json.load(file).node(),
+                Map.of("run.taskSet", "{}"))));
+        assertTrue(flipTaskOf(resting.run()).controller(base).armRest().isPresent(), "an empty taskSet trains with the task's own arm rest");
+        assertEquals(resting, TrainConfig.parse(Json.of("saved", resting.toJson())), "and its folder's config keeps it");
+    }
 
-        TrainConfig withRest = TrainConfig.parse(Json.of("set", Json.withOverrides("flip.json",
-                Json.load(Home.resolve("configs/train/flip.json")).node(), Map.of("run.armRest", "true"))));
-        assertTrue(withRest.run().armRest(), "--set run.armRest=true trains with it (TrainCommandTest: the environments do)");
-        assertEquals(withRest, TrainConfig.parse(Json.of("saved", withRest.toJson())), "and its folder's config keeps it");
-
-        Path height = Home.resolve("configs/train/height.json");
-        assertFalse(TrainConfig.load(height).run().armRest(), "absent: the arm left to the IK, as a run folder without the field trained");
-        ObjectNode node = (ObjectNode) Json.load(height).node().deepCopy();
-        ((ObjectNode) node.get("run")).put("armRest", true);
-        ConfigException e = assertThrows(ConfigException.class, () -> TrainConfig.parse(Json.of("height", node)));
-        assertTrue(e.getMessage().contains("armRest") && e.getMessage().contains("height"), e.getMessage());
+    @Test
+    void aRunSectionThatNamesTheCatchAndTheArmRestReadsAsTheTaskSetTheyStandFor() {
+        // run folders whose run section names catch and armRest (no taskSet): armRest absent or false leaves the can's arm
+        // rest out, catch replaces the task's catch
+        ObjectNode run = (ObjectNode) Json.load(Home.resolve("configs/train/height.json")).node().deepCopy();
+        ObjectNode r = (ObjectNode) run.get("run");
+        r.put("task", "flip").put("object", "can");
+        r.putObject("catch").put("planeShift", 0).put("velocityFraction", 0.7);
+        TrainConfig saved = TrainConfig.parse(Json.of("saved", run));
+        assertEquals(Map.of("objects.can.catch", "{\"planeShift\":0,\"velocityFraction\":0.7}", "objects.can.armRest", "null"),
+                saved.run().taskSet());
+        r.put("armRest", true);
+        assertEquals(Map.of("objects.can.catch", "{\"planeShift\":0,\"velocityFraction\":0.7}"),
+                TrainConfig.parse(Json.of("saved", run)).run().taskSet(), "armRest true keeps the task's arm rest");
+        ObjectNode height = (ObjectNode) Json.load(Home.resolve("configs/train/height.json")).node().deepCopy();
+        ((ObjectNode) height.get("run")).put("armRest", true);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> TrainConfig.parse(Json.of("height", height)));
+        assertTrue(e.getMessage().contains("arm rest") && e.getMessage().contains("height"), e.getMessage());
     }
 
     @Test

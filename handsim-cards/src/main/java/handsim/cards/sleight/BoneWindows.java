@@ -20,6 +20,13 @@ public record BoneWindows(double t0, double t1, double vp, double t2, double t3,
     /** The windows' parameter names, as studies list them. */
     public static final List<String> NAMES = List.of("t0", "t1", "vp", "t2", "t3", "vs");
 
+    /**
+     * The fastest mean bone speed of a trial (m/s): a fingertip flicked as fast as a hand can
+     * moves at about 2 m/s, and even that crosses the card's width (63.5 mm) in 0.03 s, three
+     * time steps; the searched pinches, slides and lifts stay below 0.05 m/s.
+     */
+    public static final double MAX_SPEED = 2;
+
     /** Reads t0, t1, vp, t2, t3, vs of {@code j} (the caller checks for unknown fields). */
     static BoneWindows parse(Json j) {
         return new BoneWindows(j.number("t0"), j.number("t1"), j.number("vp"), j.number("t2"), j.number("t3"), j.number("vs"));
@@ -39,8 +46,8 @@ public record BoneWindows(double t0, double t1, double vp, double t2, double t3,
     }
 
     /**
-     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ {@code lastEnd} and non-negative speeds; the message names
-     * the offending field and value.
+     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ {@code lastEnd} and speeds in [0, {@link #MAX_SPEED}]; the
+     * message names the offending field and value.
      */
     public void validate(double lastEnd, String source) {
         String where = source == null ? "" : source + ": ";
@@ -49,8 +56,8 @@ public record BoneWindows(double t0, double t1, double vp, double t2, double t3,
         check(t2 >= t1, where + "t2 must be >= t1 = " + t1 + ", got " + t2);
         check(t3 > t2, where + "t3 must be > t2 = " + t2 + ", got " + t3);
         check(t3 <= lastEnd, where + "t3 must be <= " + lastEnd + " s, got " + t3);
-        check(vp >= 0 && Double.isFinite(vp), where + "vp must be a finite speed >= 0, got " + vp);
-        check(vs >= 0 && Double.isFinite(vs), where + "vs must be a finite speed >= 0, got " + vs);
+        check(vp >= 0 && vp <= MAX_SPEED, where + "vp must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vp));
+        check(vs >= 0 && vs <= MAX_SPEED, where + "vs must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vs));
     }
 
     private static void check(boolean ok, String message) {
@@ -120,6 +127,10 @@ public record BoneWindows(double t0, double t1, double vp, double t2, double t3,
         for (String speed : List.of("vp", "vs")) {
             if (p.get(speed).low() < 0) {
                 throw new ConfigException(source + ": params: " + speed + "'s low must be >= 0, got " + p.get(speed).low());
+            }
+            if (p.get(speed).high() > MAX_SPEED) {
+                throw new ConfigException(source + ": params: " + speed + "'s high must be <= " + MAX_SPEED
+                        + " m/s (a flick of the finger), got " + p.get(speed).high());
             }
         }
     }

@@ -1,6 +1,7 @@
 package handsim.cards.sleight;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import handsim.cards.contact.BudgetExceeded;
 import handsim.cards.sim.SimState;
 import handsim.cards.sim.SoftWorld;
 import handsim.cards.study.Objective;
@@ -53,9 +54,15 @@ public interface CardSleight {
     /** Simulated steps between recorded frames. */
     int frameEvery();
 
-    /** The trial as a study's objective. */
+    /** The trial as a study's objective; a trial past its {@link handsim.cards.sim.TrialBudget} fails, saying which. */
     default Objective objective() {
-        return p -> run(p.values(), null).evaluation();
+        return p -> {
+            try {
+                return run(p.values(), null).evaluation();
+            } catch (BudgetExceeded e) {
+                throw new Objective.TrialFailed("past its budget: " + e.getMessage(), e);
+            }
+        };
     }
 
     /**

@@ -12,6 +12,15 @@ import handsim.config.Json;
  */
 public record FingertipSpec(double[] semiAxes, String meshName, int[] grid, int softLayers) {
 
+    /*
+     * Physical and practical ranges beyond those the fields state: semi-axes from 1 mm (a needle,
+     * not a finger) to 5 cm (larger than any finger; the thesis' are 6-12 mm); at most 41 grid
+     * points an axis (41^3 = 68,921 nodes a fingertip, 20 times the thesis' 17 x 11 x 9): finer
+     * meshes exhaust memory long before they change a sleight.
+     */
+    static final double MIN_SEMI_AXIS = 1e-3, MAX_SEMI_AXIS = 0.05;
+    static final int MAX_GRID = 41;
+
     public FingertipSpec {
         semiAxes = semiAxes.clone();
         grid = grid.clone();
@@ -45,8 +54,8 @@ public record FingertipSpec(double[] semiAxes, String meshName, int[] grid, int 
         for (String name : meshes.fieldNames()) {
             int[] g = SceneFields.ints(meshes, name, 3);
             for (int v : g) {
-                if (v < 3 || v % 2 == 0) {
-                    throw meshes.fieldError(name, "grid counts must be odd and >= 3, got " + java.util.Arrays.toString(g));
+                if (v < 3 || v > MAX_GRID || v % 2 == 0) {
+                    throw meshes.fieldError(name, "grid counts must be odd and in [3, " + MAX_GRID + "], got " + java.util.Arrays.toString(g));
                 }
             }
             if (name.equals(chosen)) {
@@ -55,8 +64,9 @@ public record FingertipSpec(double[] semiAxes, String meshName, int[] grid, int 
         }
         double[] axes = tip.numbers("semiAxes", 3);
         for (double a : axes) {
-            if (!(a > 0)) {
-                throw tip.fieldError("semiAxes", "must be positive, got " + java.util.Arrays.toString(axes));
+            if (!(a >= MIN_SEMI_AXIS && a <= MAX_SEMI_AXIS)) {
+                throw tip.fieldError("semiAxes", "each must be in [" + Json.show(MIN_SEMI_AXIS) + ", " + Json.show(MAX_SEMI_AXIS)
+                        + "] m, got " + java.util.Arrays.toString(axes));
             }
         }
         return new FingertipSpec(axes, chosen, grid, tip.integer("softLayers", 1, 100));

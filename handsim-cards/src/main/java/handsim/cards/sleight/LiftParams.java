@@ -24,12 +24,21 @@ public record LiftParams(double hStart, BoneWindows windows) {
     }
 
     /**
-     * Requires a finite hStart and windows 0 ≤ t0 < t1 ≤ t2 < t3 ≤ {@code lastLiftEnd}, speeds ≥ 0;
-     * the message names the field and value.
+     * The farthest the fingertips' centres may start from the top of the stack (m), above or
+     * below: 2 cm, beyond the fingertip's own half-height (7.5 mm) and the stack's height
+     * (54 cards of 0.26 mm, 14 mm), so a finger placed there touches no card it could lift.
+     */
+    public static final double MAX_START_HEIGHT = 0.02;
+
+    /**
+     * Requires |hStart| ≤ {@link #MAX_START_HEIGHT} and windows 0 ≤ t0 < t1 ≤ t2 < t3 ≤
+     * {@code lastLiftEnd}, speeds in [0, {@link BoneWindows#MAX_SPEED}]; the message names the
+     * field and value.
      */
     public void validate(double lastLiftEnd, String source) {
-        if (!Double.isFinite(hStart)) {
-            throw new IllegalArgumentException((source == null ? "" : source + ": ") + "hStart must be a finite height, got " + hStart);
+        if (!(Math.abs(hStart) <= MAX_START_HEIGHT)) {
+            throw new IllegalArgumentException((source == null ? "" : source + ": ") + "hStart must be a height in [-"
+                    + Json.show(MAX_START_HEIGHT) + ", " + Json.show(MAX_START_HEIGHT) + "] m, got " + Json.show(hStart));
         }
         windows.validate(lastLiftEnd, source);
     }

@@ -8,6 +8,7 @@ import handsim.cards.sim.SimState;
 import handsim.cards.sim.SoftSimulator;
 import handsim.cards.sim.SoftWorld;
 import handsim.cards.sim.SolverSettings;
+import handsim.cards.sim.TrialBudget;
 import handsim.cards.sim.StepStats;
 import handsim.cards.study.StudyConfig;
 import handsim.config.ConfigException;
@@ -38,22 +39,25 @@ public final class LiftTrial implements CardSleight {
 
     private final LiftScene scene;
     private final SolverSettings settings;
+    private final TrialBudget budget;
     private final ObjectNode inputs;
     private final JsonNode checkpointKey;
     private final Path checkpointFile;
     private Consumer<String> log = line -> { };
     private SimState rested;
 
-    LiftTrial(LiftConfig config, Materials materials, SolverSettings settings, ObjectNode inputs, JsonNode checkpointKey, Path checkpoints) {
+    LiftTrial(LiftConfig config, Materials materials, SolverSettings settings, TrialBudget budget, ObjectNode inputs, JsonNode checkpointKey,
+              Path checkpoints) {
         this.scene = new LiftScene(config, materials, settings);
         this.settings = settings;
+        this.budget = budget;
         this.inputs = inputs;
         this.checkpointKey = checkpointKey;
         this.checkpointFile = checkpoints == null ? null : StackCheckpoint.file(checkpoints, "double-lift", checkpointKey);
     }
 
     /**
-     * The trial of configs/cards/{double-lift,materials,solver}.json under {@code home} with fields
+     * The trial of configs/cards/{double-lift,materials,solver,budget}.json under {@code home} with fields
      * overridden by dotted path ({@code "double-lift.trial.hTarget" -> "0.004"}), an optional
      * fingertip resolution and card preset; the rested stack is kept in {@code checkpoints}
      * (null: in memory only).
@@ -105,7 +109,7 @@ public final class LiftTrial implements CardSleight {
     SimState warmUp() {
         LiftConfig c = scene.config();
         SimState s = scene.stackWorld().restState();
-        SoftSimulator sim = new SoftSimulator(scene.stackWorld(), settings, handsim.cards.sim.BoneMotion.STILL);
+        SoftSimulator sim = new SoftSimulator(scene.stackWorld(), settings, handsim.cards.sim.BoneMotion.STILL).withBudget(budget, c.warmupLimit());
         int still = 0;
         long t0 = System.nanoTime();
         while (still < c.restSteps()) {
@@ -137,7 +141,7 @@ public final class LiftTrial implements CardSleight {
         p.validate(c.lastLiftEnd(), null);
         SimState start = scene.startState(restedStack(), p.hStart());
         SimState state = start.copy();
-        SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(p));
+        SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(p)).withBudget(budget, c.duration());
         int steps = (int) Math.round(c.duration() / settings.timeStep());
         TrialCost cost = TrialCost.simulate(sim, state, steps, settings.timeStep(), listener);
         return new LiftResult(scene.rise(start, state, 1), scene.rise(start, state, 2), scene.rise(start, state, 3),
@@ -216,5 +220,11 @@ public final class LiftTrial implements CardSleight {
             throw new ConfigException(source + ": objectives: Double Lift has three objectives (eq. 4.6), got " + c.objectives());
         }
         BoneWindows.checkSearchSpace(c, PARAMS, scene.config().lastLiftEnd(), title(), source);
+        for (handsim.cards.tpe.Param q : c.params()) {
+            if (q.name().equals("hStart") && !(Math.max(-q.low(), q.high()) <= LiftParams.MAX_START_HEIGHT)) {
+                throw new ConfigException(source + ": params: hStart's range must lie within +-" + LiftParams.MAX_START_HEIGHT
+                        + " m of the stack's top, got [" + q.low() + ", " + q.high() + "]");
+            }
+        }
     }
 }

@@ -36,6 +36,10 @@ public record SnapConfig(CardSpec card, FingertipSpec fingertip, double pinchBel
                 duration, trial.number("alphaTarget", 0, 180), trial.number("dropLimit", 0, 10), trial.number("droppedObjective", 0, 1e6),
                 trial.integer("frameEvery", 1, 10_000),
                 defaults);
+        if (pinchBelowTop > cardSpec.length()) {
+            throw tip.fieldError("pinchBelowTop", "must be within the card's length " + Json.show(cardSpec.length()) + " m, got "
+                    + Json.show(pinchBelowTop));
+        }
         for (Json node : new Json[] {card, tip, hold, trial, j}) {
             node.requireNoUnknownFields();
         }

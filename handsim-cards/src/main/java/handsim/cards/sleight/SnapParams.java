@@ -11,6 +11,9 @@ import java.util.Map;
  */
 public record SnapParams(double t0, double t1, double vp, double t2, double t3, double vs) {
 
+    /** The fastest mean bone speed of a trial (m/s), {@link BoneWindows#MAX_SPEED}. */
+    public static final double MAX_SPEED = BoneWindows.MAX_SPEED;
+
     /** Reads {@code {"t0": …, "t1": …, "vp": …, "t2": …, "t3": …, "vs": …}} (a "comment" is allowed). */
     public static SnapParams parse(Json j) {
         j.allow("comment");
@@ -30,8 +33,8 @@ public record SnapParams(double t0, double t1, double vp, double t2, double t3, 
     }
 
     /**
-     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ duration and non-negative speeds; the message names the
-     * offending field and value.
+     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ duration and speeds in [0, {@link #MAX_SPEED}]; the
+     * message names the offending field and value.
      */
     public void validate(double duration, String source) {
         windows().validate(duration, source);

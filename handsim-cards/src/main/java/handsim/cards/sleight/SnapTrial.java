@@ -7,6 +7,7 @@ import handsim.cards.sim.SimState;
 import handsim.cards.sim.SoftSimulator;
 import handsim.cards.sim.SolverSettings;
 import handsim.cards.sim.SoftWorld;
+import handsim.cards.sim.TrialBudget;
 import handsim.cards.study.StudyConfig;
 import handsim.config.ConfigException;
 import handsim.config.Json;
@@ -21,27 +22,36 @@ import java.util.Map;
  * the configured duration and returns the end angle between the cards and |α_target − α_end|
  * (or the configured dropped objective if a card fell out of the fingers).
  * Same parameters give bit-identical trajectories. Safe to call from several threads: each trial
- * builds its own simulator.
+ * builds its own simulator. A simulation past its {@link TrialBudget} throws
+ * {@link handsim.cards.contact.BudgetExceeded}.
  */
 public final class SnapTrial implements CardSleight {
 
     private final SnapScene scene;
     private final SolverSettings settings;
+    private final TrialBudget budget;
     private final ObjectNode inputs;
     private SimState held;
 
+    /** A trial with no budget ({@link TrialBudget#UNLIMITED}). */
     public SnapTrial(SnapConfig config, Materials materials, SolverSettings settings) {
-        this(config, materials, settings, Json.mapper().createObjectNode());
+        this(config, materials, settings, TrialBudget.UNLIMITED);
     }
 
-    SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, ObjectNode inputs) {
+    /** A trial whose simulations (the hold, each run) are limited to {@code budget}. */
+    public SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget) {
+        this(config, materials, settings, budget, Json.mapper().createObjectNode());
+    }
+
+    SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget, ObjectNode inputs) {
         this.scene = new SnapScene(config, materials, settings);
         this.settings = settings;
+        this.budget = budget;
         this.inputs = inputs;
     }
 
     /**
-     * The trial of the project's configs: configs/cards/{snap,materials,solver}.json under
+     * The trial of the project's configs: configs/cards/{snap,materials,solver,budget}.json under
      * {@code home}, with an optional fingertip resolution ("thesis", "reduced") and card preset.
      */
     public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset) {
@@ -51,7 +61,7 @@ public final class SnapTrial implements CardSleight {
     /**
      * {@link #fromConfigs(Path, String, String)} with fields overridden by dotted path, the first
      * part naming the file: {@code "snap.trial.duration" -> "0.3"}, {@code "solver.parallel" ->
-     * "false"} (values in JSON; files snap, materials, solver).
+     * "false"} (values in JSON; files snap, materials, solver, budget).
      */
     public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset, Map<String, String> overrides) {
         return (SnapTrial) Sleights.fromConfigs("snap", home, mesh, cardPreset, overrides, null);
@@ -59,8 +69,8 @@ public final class SnapTrial implements CardSleight {
 
     /**
      * What this trial was built from, for a study's record: the sleight, fingertip mesh and card
-     * preset, and snap.json (with any overrides), materials.json and solver.json as read; empty
-     * for a trial built from records.
+     * preset, snap.json (with any overrides), materials.json and solver.json as read, and the
+     * budget; empty for a trial built from records.
      */
     @Override
     public ObjectNode inputs() {
@@ -75,6 +85,11 @@ public final class SnapTrial implements CardSleight {
         return settings;
     }
 
+    /** What one simulation of this trial may use ({@link TrialBudget}). */
+    public TrialBudget budget() {
+        return budget;
+    }
+
     /** The rested hold every trial starts from (simulated on first use). */
     public synchronized SimState heldState() {
         if (held == null) {
@@ -82,7 +97,7 @@ public final class SnapTrial implements CardSleight {
             double warmup = scene.config().warmup();
             // gravity ramps on over the second half of the warm-up, once the bones hold the cards
             SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(null))
-                    .withGravityScale(t -> BoneWindows.ease(t, 0.5 * warmup, warmup));
+                    .withGravityScale(t -> BoneWindows.ease(t, 0.5 * warmup, warmup)).withBudget(budget, warmup);
             int steps = (int) Math.round(scene.config().warmup() / settings.timeStep());
             for (int i = 0; i < steps; i++) {
                 sim.step(s);
@@ -100,7 +115,7 @@ public final class SnapTrial implements CardSleight {
         SnapConfig c = scene.config();
         params.validate(c.duration(), null);
         SimState state = heldState();
-        SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(params));
+        SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(params)).withBudget(budget, c.duration());
         int steps = (int) Math.round(c.duration() / settings.timeStep());
         TrialCost cost = TrialCost.simulate(sim, state, steps, settings.timeStep(), listener);
         double alpha = scene.angleBetweenCards(state);

@@ -1,5 +1,6 @@
 package handsim.cards.study;
 
+import handsim.report.Durations;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
@@ -19,10 +20,11 @@ final class Progress {
         this.nTrials = nTrials;
     }
 
-    void start(int workers) {
+    /** The first line; {@code where} says what runs the trials ("2 workers"). */
+    void start(String where) {
         StudyConfig c = study.config();
-        print(String.format(Locale.ROOT, "study %s: %d trials, %d finished, seed %d; %d workers, at most %d trials at once; %s, %d start-up trials",
-                study.dir(), nTrials, finishedInRange(), study.seed(), workers, c.parallelTrials(),
+        print(String.format(Locale.ROOT, "study %s: %d trials, %d finished, seed %d; %s, at most %d trials at once; %s, %d start-up trials",
+                study.dir(), nTrials, finishedInRange(), study.seed(), where, c.parallelTrials(),
                 c.multiObjective() ? "MOTPE" : "TPE", c.sampler().nStartupTrials()));
     }
 
@@ -33,12 +35,12 @@ final class Progress {
         double eta = (nTrials - done) * elapsed / finishedThisRun;
         print(String.format(Locale.ROOT, "trial %d %s in %.3g s: %s | %s | %d/%d finished, %d running | elapsed %s, ETA %s",
                 t.number(), t.isComplete() ? "complete" : "failed", t.seconds(), t.isComplete() ? values(t) : t.error(), best(),
-                done, nTrials, running, clock(elapsed), clock(eta)));
+                done, nTrials, running, Durations.clock(elapsed), Durations.clock(eta)));
     }
 
     void end() {
         print(String.format(Locale.ROOT, "study %s: %d/%d trials finished in %s; %s", study.dir(), finishedInRange(), nTrials,
-                clock((System.nanoTime() - t0) * 1e-9), best()));
+                Durations.clock((System.nanoTime() - t0) * 1e-9), best()));
     }
 
     private String values(TrialRecord t) {
@@ -70,17 +72,5 @@ final class Progress {
 
     private static String number(double v) {
         return String.format(Locale.ROOT, "%.4g", v);
-    }
-
-    /** 42s, 3m05s, 1h02m. */
-    static String clock(double seconds) {
-        long s = Math.round(seconds);
-        if (s < 60) {
-            return s + "s";
-        }
-        if (s < 3600) {
-            return String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60);
-        }
-        return String.format(Locale.ROOT, "%dh%02dm", s / 3600, (s % 3600) / 60);
     }
 }

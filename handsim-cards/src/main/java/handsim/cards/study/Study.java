@@ -9,14 +9,13 @@ import handsim.cards.tpe.Pareto;
 import handsim.cards.tpe.TpeSampler;
 import handsim.config.ConfigException;
 import handsim.config.Json;
-import java.io.FileOutputStream;
+import handsim.report.Locks;
+import handsim.report.Outputs;
+import handsim.report.Stop;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Iterator;
@@ -51,7 +50,8 @@ import java.util.stream.Stream;
  *   <li>it is suggested once every trial numbered 0 … k - P has finished, from those of them
  *       that completed, never from a later one that happens to have finished.</li>
  * </ul>
- * Trials start in number order on up to {@code workers} threads, at most P at a time. So the
+ * Trials start in number order on up to {@code workers} threads (or a cluster's executors:
+ * {@link TrialExecutor}), at most P at a time. So the
  * study's trials are the same for any number of workers, and a study resumed after a kill
  * continues exactly as if it had never stopped: finished trials are read back bit for bit, and
  * a trial that was running is run again with the same parameters. P = 1 is Optuna's sequential
@@ -65,6 +65,8 @@ public final class Study {
     public static final String BEST_FILE = "best.json";
     private static final Pattern TRIAL_FILE = Pattern.compile("trial-(\\d+)\\.json");
     private static final String FORMAT = "handsim cards study 1";
+    /** How often a study waiting for a trial looks for a stop request (ms); every {@link TrialExecutor} waits so. */
+    static final long STOP_POLL_MILLIS = 100;
 
     private final Path dir;
     private final StudyConfig config;
@@ -75,6 +77,8 @@ public final class Study {
     private String displayUnit = "";
     /** Finished trials (complete or failed) by number. */
     private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
+    /** Whether study.json records this run already ({@link #recordRun}). */
+    private boolean runRecorded;
 
     private Study(Path dir, StudyConfig config, long seed, ObjectNode studyJson) {
         this.dir = dir;
@@ -85,9 +89,10 @@ public final class Study {
     }
 
     /**
-     * Opens the study in {@code dir} to run it: creates it when the folder has no study.json,
-     * resumes it otherwise, which requires the same config and seed (else a
-     * {@link ConfigException} naming the field). {@code provenance} (command line, commit, ...)
+     * Opens the study in {@code dir} to run it, holding the folder for this process alone
+     * ({@link Locks}: a second process is refused at once): creates it when the folder has no
+     * study.json, resumes it otherwise, which requires the same config and seed (else a
+     * {@link ConfigException} naming the field), and trial files inside the search space. {@code provenance} (command line, commit, ...)
      * is recorded in study.json for this run.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode provenance) throws IOException {
@@ -101,6 +106,8 @@ public final class Study {
      * ones this objective gives otherwise.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode objective, ObjectNode provenance) throws IOException {
+        Files.createDirectories(dir);
+        Locks.holdFolder(dir, "the study folder " + dir, note -> System.out.println("handsim: " + note));
         Path file = dir.resolve(STUDY_FILE);
         Study study;
         if (Files.exists(file)) {
@@ -131,8 +138,15 @@ public final class Study {
         ObjectNode run = ((ArrayNode) study.studyJson.get("runs")).addObject();
         run.put("finishedBefore", study.finished.size());
         run.set("provenance", provenance.deepCopy());
-        writeJson(file, study.studyJson);
-        return study;
+        return study; // study.json is written when the study runs: a command that fails before (its hold) leaves nothing
+    }
+
+    /** Writes study.json with this run recorded, once, as the study starts its trials. */
+    private void recordRun() throws IOException {
+        if (!runRecorded) {
+            writeJson(dir.resolve(STUDY_FILE), studyJson);
+            runRecorded = true;
+        }
     }
 
     /** Reads an existing study (its config, seed and finished trials) without running it. */
@@ -233,37 +247,37 @@ public final class Study {
 
     /**
      * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads of
-     * this JVM ({@link LocalTrials}); see {@link #run(TrialExecutor, int, PrintStream)}.
+     * this JVM ({@link ThreadTrials}); see {@link #run(TrialExecutor, int, PrintStream)}.
      */
     public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
         if (workers < 1) {
             throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
         }
-        try (LocalTrials local = new LocalTrials(objective, config, workers)) {
-            run(local, nTrials, progress);
+        try (TrialExecutor threads = new ThreadTrials(objective, config, workers)) {
+            run(threads, nTrials, progress);
         }
     }
 
     /**
-     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code executor}, with a
-     * progress line per finished trial on {@code progress} (null for none). Writes each trial's
-     * file as it finishes, best.json after each, the history plots at the end. If the calling
-     * thread is interrupted, the running trials are abandoned (they run again on resume), the
-     * report is written and InterruptedException is thrown.
+     * {@link #run(Objective, int, int, PrintStream)} with the trials run by {@code executor} (this
+     * JVM's threads, or a cluster's executors): the trials and their files are the same whatever
+     * runs them. The executor is the caller's to close.
      */
     public void run(TrialExecutor executor, int nTrials, PrintStream progress) throws IOException, InterruptedException {
         if (nTrials < 1) {
             throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
         }
+        recordRun();
         Progress log = new Progress(progress, this, nTrials);
-        log.start(executor.slots());
+        log.start(executor.describe());
         TreeSet<Integer> running = new TreeSet<>();
-        try {
+        try (Stop.Watch watch = Stop.watch()) {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots(); k = nextToStart(nTrials, running)) {
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots() && !Stop.requested();
+                        k = nextToStart(nTrials, running)) {
                     running.add(k);
-                    executor.submit(k, suggest(k));
+                    executor.start(k, suggest(k));
                 }
                 if (last != null) {
                     log.finished(last, running.size());
@@ -271,7 +285,10 @@ public final class Study {
                 if (running.isEmpty()) {
                     break;
                 }
-                last = executor.take();
+                last = executor.next();
+                if (last == null) {
+                    break; // a stop was requested: the trials under way are abandoned (they run again on resume)
+                }
                 running.remove(last.number());
                 finished.put(last.number(), last);
                 writeJson(trialFile(last.number()), last.toJson(config));
@@ -280,6 +297,7 @@ public final class Study {
         } finally {
             writeReport();
         }
+        Stop.check(finished.size() + " trials finished, kept in " + dir + " (the same command goes on from them)");
         log.end();
     }
 
@@ -322,6 +340,39 @@ public final class Study {
         return new SplittableRandom(s);
     }
 
+    /**
+     * Trial {@code number} of {@code objective} at {@code x}, timed: complete, or failed when the
+     * objective throws or gives a value that is not finite. What every executor of trials runs.
+     */
+    static TrialRecord trial(Objective objective, StudyConfig config, int number, double[] x) {
+        long t0 = System.nanoTime();
+        Evaluation e;
+        try {
+            e = objective.evaluate(TrialParams.of(number, config, x));
+        } catch (Stop.Stopped stopped) {
+            throw stopped;
+        } catch (Exception ex) {
+            // a trial past its budget says why in its message; anything else is named by its class too
+            String why = ex instanceof Objective.TrialFailed ? ex.getMessage() : ex.toString();
+            return TrialRecord.failed(number, x, why, (System.nanoTime() - t0) * 1e-9);
+        } catch (OutOfMemoryError oom) {
+            // what the trial allocated is garbage once its stack is gone: the study goes on without it
+            return TrialRecord.failed(number, x, "out of memory (" + oom.getMessage() + ")", (System.nanoTime() - t0) * 1e-9);
+        }
+        double seconds = (System.nanoTime() - t0) * 1e-9;
+        double[] values = e.values();
+        if (values.length != config.objectives().size()) {
+            throw new IllegalStateException("the objective returned " + values.length + " values for the study's " + config.objectives().size()
+                    + " objectives " + config.objectives());
+        }
+        for (int i = 0; i < values.length; i++) {
+            if (!Double.isFinite(values[i])) {
+                return TrialRecord.failed(number, x, config.objectives().get(i) + " is " + values[i], seconds);
+            }
+        }
+        return TrialRecord.complete(number, x, e, seconds);
+    }
+
     private Path trialFile(int number) {
         return dir.resolve(TRIALS_DIR).resolve(String.format(Locale.ROOT, "trial-%04d.json", number));
     }
@@ -361,18 +412,9 @@ public final class Study {
         writeJson(dir.resolve(BEST_FILE), root);
     }
 
-    /**
-     * Writes a JSON file atomically (a temporary file moved into place) with plain streams, which,
-     * unlike NIO channels, an interrupt of the writing thread does not break off.
-     */
+    /** Writes a JSON file atomically ({@link Outputs}), as it was always written (pretty, a line break at the end). */
     private static void writeJson(Path file, JsonNode node) throws IOException {
-        Path abs = file.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
-        try (OutputStream out = new FileOutputStream(tmp.toFile())) {
-            out.write((Json.pretty(node) + "\n").getBytes(StandardCharsets.UTF_8));
-        }
-        Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writeString(file, Json.pretty(node) + "\n");
     }
 
     /** The first place where two JSON trees differ, as "path: a vs b"; null if equal. */
@@ -404,6 +446,8 @@ public final class Study {
             }
             return null;
         }
-        return a.equals(b) ? null : path + ": " + a + " in the study, " + b + " given";
+        // a number is its value: 4000000 read back from study.json (an int) is the long it was written from
+        boolean same = a.isNumber() && b.isNumber() ? a.decimalValue().compareTo(b.decimalValue()) == 0 : a.equals(b);
+        return same ? null : path + ": " + a + " in the study, " + b + " given";
     }
 }

@@ -1,55 +1,29 @@
 package handsim.cards.study;
 
 /**
- * Where a study's trials are evaluated. The study decides which trial runs when and with what
- * parameters (trial k is a function of the seed, k and trials 0 … k − P); an executor only
- * evaluates them, each by {@link #evaluate}, a pure function of the objective, the config, the
- * trial's number and its parameters, and hands back the records in any order. {@link
- * LocalTrials}, a thread pool in this JVM, is the default; another executor (say a cluster's)
- * gives byte-identical studies as long as its objective is the same function.
+ * What runs a study's trials: this JVM's threads ({@link Study#run(Objective, int, int,
+ * java.io.PrintStream)}) or a cluster's executors ({@link RemoteTrials}). The study suggests each
+ * trial's parameters and writes every file; an executor only runs trials and hands back their
+ * records, in whatever order they finish.
  */
 public interface TrialExecutor extends AutoCloseable {
 
-    /** How many trials it evaluates at once. */
+    /** How many trials it runs at once; the study also runs at most its parallelTrials. */
     int slots();
 
-    /** Starts evaluating trial {@code number} with {@code params} (search-space order, own units). */
-    void submit(int number, double[] params);
+    /** What runs the trials, for the study's first progress line ("2 workers"). */
+    String describe();
+
+    /** Starts trial {@code number} at {@code params} (the search space's order). */
+    void start(int number, double[] params);
 
     /**
-     * The next finished trial, waiting for one; an objective's exception is a failed record, a
-     * failure of the executor itself is thrown.
+     * Waits for a started trial to finish and returns its record: the next to finish, whichever it
+     * is; or null once a stop is requested ({@code handsim.report.Stop}) while it waits.
      */
-    TrialRecord take() throws InterruptedException;
+    TrialRecord next() throws InterruptedException;
 
-    /** Abandons running trials and releases the workers. */
+    /** Abandons the trials still running (a resumed study runs them again). */
     @Override
     void close();
-
-    /**
-     * Trial {@code number} of {@code objective}: complete with its values and figures, or failed
-     * with the error when the objective throws or returns a value that is not finite; the wall
-     * time of the evaluation is kept.
-     */
-    static TrialRecord evaluate(Objective objective, StudyConfig config, int number, double[] params) {
-        long t0 = System.nanoTime();
-        Evaluation e;
-        try {
-            e = objective.evaluate(TrialParams.of(number, config, params));
-        } catch (Exception ex) {
-            return TrialRecord.failed(number, params, ex.toString(), (System.nanoTime() - t0) * 1e-9);
-        }
-        double seconds = (System.nanoTime() - t0) * 1e-9;
-        double[] values = e.values();
-        if (values.length != config.objectives().size()) {
-            throw new IllegalStateException("the objective returned " + values.length + " values for the study's " + config.objectives().size()
-                    + " objectives " + config.objectives());
-        }
-        for (int i = 0; i < values.length; i++) {
-            if (!Double.isFinite(values[i])) {
-                return TrialRecord.failed(number, params, config.objectives().get(i) + " is " + values[i], seconds);
-            }
-        }
-        return TrialRecord.complete(number, params, e, seconds);
-    }
 }

@@ -59,14 +59,19 @@ class ChosenTrialTest {
         }
 
         @Override
-        public void submit(int number, double[] p) {
+        public String describe() {
+            return "backwards";
+        }
+
+        @Override
+        public void start(int number, double[] p) {
             numbers.push(new int[] {number});
             params.push(p.clone());
         }
 
         @Override
-        public TrialRecord take() {
-            return TrialExecutor.evaluate(ChosenTrialTest::objective, config, numbers.pop()[0], params.pop());
+        public TrialRecord next() {
+            return Study.trial(ChosenTrialTest::objective, config, numbers.pop()[0], params.pop());
         }
 
         @Override

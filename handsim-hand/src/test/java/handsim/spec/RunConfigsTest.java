@@ -1,10 +1,11 @@
-package handsim.app;
+package handsim.spec;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import handsim.config.ConfigException;
+import handsim.config.ConfigSet;
 import handsim.config.Home;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,9 +13,9 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The shipped planner settings per object, read from a home of the test's own. */
+/** A run's configs parsed from a home of the test's own: the planner settings per object. */
 @Tag("fast")
-class WiringTest {
+class RunConfigsTest {
 
     @Test
     void plannerSettingsForAnObjectThatDoesNotExistAreRefusedByName(@TempDir Path home) throws Exception {
@@ -27,11 +28,12 @@ class WiringTest {
         System.setProperty("handsim.home", home.toString());
         try {
             Files.writeString(home.resolve("configs/planner.json"), planner.formatted("\"club\""));
-            assertEquals(3, Wiring.plannerConfig("club").lookahead());
-            assertEquals(0, Wiring.plannerConfig("can").lookahead(), "an object without an entry keeps the file's settings");
+            RunConfigs configs = new RunConfigs(ConfigSet.fromFiles());
+            assertEquals(3, configs.planner("club").lookahead());
+            assertEquals(0, configs.planner("can").lookahead(), "an object without an entry keeps the file's settings");
 
             Files.writeString(home.resolve("configs/planner.json"), planner.formatted("\"clb\""));
-            var e = assertThrows(ConfigException.class, () -> Wiring.plannerConfig("club"));
+            var e = assertThrows(ConfigException.class, () -> new RunConfigs(ConfigSet.fromFiles()).planner("club"));
             assertTrue(e.getMessage().contains("objects.clb") && e.getMessage().contains("no such object"), e.getMessage());
         } finally {
             if (before == null) {

@@ -1,13 +1,16 @@
 package handsim.cards.study;
 
+import handsim.report.Stop;
 import java.util.concurrent.CompletionService;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorCompletionService;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 
-/** Trials on a pool of worker threads in this JVM: the default {@link TrialExecutor}. */
-public final class LocalTrials implements TrialExecutor {
+/** A study's trials on threads of this JVM, each calling the objective directly. */
+final class ThreadTrials implements TrialExecutor {
 
     private final Objective objective;
     private final StudyConfig config;
@@ -15,11 +18,7 @@ public final class LocalTrials implements TrialExecutor {
     private final ExecutorService pool;
     private final CompletionService<TrialRecord> done;
 
-    /** {@code workers} threads (≥ 1) evaluating {@code objective}, several at once. */
-    public LocalTrials(Objective objective, StudyConfig config, int workers) {
-        if (workers < 1) {
-            throw new IllegalArgumentException("workers: must be >= 1, got " + workers);
-        }
+    ThreadTrials(Objective objective, StudyConfig config, int workers) {
         this.objective = objective;
         this.config = config;
         this.workers = workers;
@@ -37,15 +36,25 @@ public final class LocalTrials implements TrialExecutor {
     }
 
     @Override
-    public void submit(int number, double[] params) {
-        double[] p = params.clone();
-        done.submit(() -> TrialExecutor.evaluate(objective, config, number, p));
+    public String describe() {
+        return workers + (workers == 1 ? " worker" : " workers");
     }
 
     @Override
-    public TrialRecord take() throws InterruptedException {
+    public void start(int number, double[] params) {
+        done.submit(() -> Study.trial(objective, config, number, params));
+    }
+
+    @Override
+    public TrialRecord next() throws InterruptedException {
+        Future<TrialRecord> next;
+        while ((next = done.poll(Study.STOP_POLL_MILLIS, TimeUnit.MILLISECONDS)) == null) {
+            if (Stop.requested()) {
+                return null;
+            }
+        }
         try {
-            return done.take().get();
+            return next.get();
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
             if (cause instanceof RuntimeException r) {

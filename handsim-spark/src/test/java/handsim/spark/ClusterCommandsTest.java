@@ -1,0 +1,182 @@
+package handsim.spark;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.app.Main;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Commands on a standalone cluster of a master and two one-core workers started by
+ * scripts/spark-cluster. A short box evaluation (6 tests) writes the JSON, CSV and success map of
+ * the same evaluation on this JVM's threads, byte for byte but for what describes the run. A
+ * short Card Snapping study (reduced fingertips, 0.2 s trials, 6 trials, two at once) gives the
+ * trial files of the same study on threads, byte for byte but for the wall times the trials
+ * measured; so does the study when its driver is killed and the same command resumes it, and
+ * when a worker is killed mid-study (the cluster runs its trial again and says what that lost).
+ * The cluster is stopped after the tests, also when they fail.
+ */
+@Tag("slow")
+@Tag("cluster")
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+class ClusterCommandsTest {
+
+    private static final Path CONFIG = Path.of("handsim-spark/src/test/resources/cluster/short-snap-study.json");
+    /** What the comparison leaves out: study.json records each run's command line (--master among it). */
+    private static final List<String> RUN_RECORDS = List.of("study.json");
+
+    private static TestCluster cluster;
+    private static Path local;
+
+    @TempDir
+    static Path tmp;
+
+    private static List<String> study(Path out, String... more) {
+        List<String> args = new ArrayList<>(List.of("cards", "optimize", "--sleight", "snap", "--trials", "6", "--seed", "4", "--mesh",
+                "reduced", "--no-frames", "--config", CONFIG.toString(), "--set", "snap.trial.duration=0.2", "--set", "snap.params.t1=0.05", "--set",
+                "snap.params.t2=0.07", "--set", "snap.params.t3=0.13", "--out", out.toString()));
+        args.addAll(List.of(more));
+        return args;
+    }
+
+    @BeforeAll
+    static void startClusterAndRunTheStudyLocally() throws Exception {
+        cluster = TestCluster.start(2);
+        local = tmp.resolve("local");
+        assertEquals(0, Main.run(study(local, "--workers", "2").toArray(String[]::new)), "the local study");
+    }
+
+    @AfterAll
+    static void stopCluster() {
+        if (cluster != null) {
+            cluster.close();
+        }
+    }
+
+    @Test
+    @Order(0)
+    void aBoxEvaluationOnTheClusterIsTheThreadPools() throws Exception {
+        Path dir = tmp.resolve("box");
+        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "6", "--seed", "77"};
+        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
+                "--csv", dir.resolve("threads.csv").toString())));
+        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
+                "--csv", dir.resolve("cluster.csv").toString())));
+        SparkEvaluationTest.assertSameEvaluation(dir, "threads", "cluster");
+    }
+
+    @Test
+    @Order(1)
+    void theClusterGivesTheLocalTrialFiles() throws Exception {
+        Path remote = tmp.resolve("cluster");
+        assertEquals(0, Main.run(study(remote, "--master", cluster.master()).toArray(String[]::new)));
+        int files = SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
+        assertTrue(files >= 6 + 2, files + " files compared: the 6 trials, best.json and history.png at least");
+    }
+
+    @Test
+    @Order(2)
+    void aKilledDriverResumesToTheSameTrials() throws Exception {
+        Path remote = tmp.resolve("driver-killed");
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                System.getProperty("java.class.path"), "-Dhandsim.home=" + Path.of("").toAbsolutePath(), Main.class.getName()));
+        command.addAll(study(remote, "--master", cluster.master()));
+        Process driver = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(tmp.resolve("driver.log").toFile()).start();
+        try {
+            awaitTrialFiles(remote, 2, driver);
+        } finally {
+            driver.descendants().forEach(ProcessHandle::destroyForcibly);
+            driver.destroyForcibly().waitFor(30, TimeUnit.SECONDS); // kill -9: no shutdown hook, trials under way lost
+        }
+        int before = trialFiles(remote);
+        assertTrue(before >= 2 && before < 6, before + " trials finished when the driver was killed");
+        assertEquals(0, Main.run(study(remote, "--master", cluster.master()).toArray(String[]::new)), "the same command resumes");
+        SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
+    }
+
+    @Test
+    @Order(3)
+    void aWorkerKilledMidStudyCostsTimeButNotTheResults() throws Exception {
+        Path remote = tmp.resolve("worker-killed");
+        ByteArrayOutputStream lines = new ByteArrayOutputStream();
+        PrintStream console = System.out;
+        int[] exit = {-1};
+        Thread run = new Thread(() -> exit[0] = Main.run(study(remote, "--master", cluster.master()).toArray(String[]::new)));
+        System.setOut(new PrintStream(new Tee(console, lines), true, StandardCharsets.UTF_8));
+        try {
+            run.start();
+            awaitTrialFiles(remote, 1, null);
+            cluster.killWorker(1); // both workers run a trial now (two at once): one is lost with its executor
+            run.join(TimeUnit.MINUTES.toMillis(20));
+        } finally {
+            System.setOut(console);
+        }
+        assertEquals(0, exit[0], "the study finishes on the worker left");
+        SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
+        Matcher lost = Pattern.compile("(\\d+) attempts lost with their executors and run again \\(([0-9.]+) s of executor time lost\\)")
+                .matcher(lines.toString(StandardCharsets.UTF_8));
+        assertTrue(lost.find(), "the batch's last line says what the lost worker cost");
+        assertTrue(Integer.parseInt(lost.group(1)) >= 1 && Double.parseDouble(lost.group(2)) > 0, lost.group());
+    }
+
+    private static int trialFiles(Path study) throws IOException {
+        Path trials = study.resolve("trials");
+        if (!Files.isDirectory(trials)) {
+            return 0;
+        }
+        try (Stream<Path> files = Files.list(trials)) {
+            return (int) files.filter(f -> f.getFileName().toString().matches("trial-\\d+\\.json")).count();
+        }
+    }
+
+    private static void awaitTrialFiles(Path study, int n, Process alive) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(15);
+        while (trialFiles(study) < n) {
+            assertTrue(System.nanoTime() < deadline, "no " + n + " trials within 15 minutes");
+            assertTrue(alive == null || alive.isAlive(), "the driver ended early: " + TestCluster.read(tmp.resolve("driver.log")));
+            Thread.sleep(100);
+        }
+    }
+
+    /** Writes to two streams. */
+    private static final class Tee extends java.io.OutputStream {
+        private final java.io.OutputStream a;
+        private final java.io.OutputStream b;
+
+        Tee(java.io.OutputStream a, java.io.OutputStream b) {
+            this.a = a;
+            this.b = b;
+        }
+
+        @Override
+        public synchronized void write(int c) throws IOException {
+            a.write(c);
+            b.write(c);
+        }
+
+        @Override
+        public synchronized void write(byte[] buf, int off, int len) throws IOException {
+            a.write(buf, off, len);
+            b.write(buf, off, len);
+        }
+    }
+}
