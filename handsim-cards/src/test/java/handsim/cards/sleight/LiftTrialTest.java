@@ -79,4 +79,31 @@ class LiftTrialTest {
                 () -> trial.run(new LiftParams(0, new BoneWindows(0, 0.08, 0.006, 0.1, 0.38, 0.025)), null));
         assertTrue(e.getMessage().startsWith("t3 must be <="), e.getMessage());
     }
+
+    @Test
+    void startHeightsAndSpeedsBeyondAFingersReachAreRefusedAndATrialPastItsBudgetStops(@TempDir Path dir) {
+        LiftTrial trial = reduced(dir);
+        // 3 cm above the stack: farther than the fingertip's half-height and the stack's height (LiftParams.MAX_START_HEIGHT)
+        IllegalArgumentException high = assertThrows(IllegalArgumentException.class,
+                () -> trial.run(pinchAndLift(0.03, 0.006), null));
+        assertEquals("hStart must be a height in [-0.02, 0.02] m, got 0.03", high.getMessage());
+        // a lift at 1e6 m/s: faster than a flick of the finger (2 m/s)
+        IllegalArgumentException fast = assertThrows(IllegalArgumentException.class,
+                () -> trial.run(new LiftParams(0, new BoneWindows(0, 0.08, 0.006, 0.1, 0.3, 1e6)), null));
+        assertEquals("vs must be a speed in [0, 2] m/s, got 1000000", fast.getMessage());
+        // a Newton iteration a simulated step (100 a simulated second, 40 for the 0.4 s trial): the pinch's steps take more
+        Map<String, String> o = new LinkedHashMap<>();
+        o.put("double-lift.stack.count", "4");
+        o.put("double-lift.fingertip.mesh", "\"coarse\"");
+        o.put("double-lift.trial.duration", "0.4");
+        o.put("double-lift.trial.restAfterLift", "0.05");
+        LiftTrial budgeted = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, dir);
+        budgeted.restedStack(); // the warm-up within the shipped budget
+        o.put("budget.maxNewtonIterationsPerSecond", "100");
+        LiftTrial tight = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, dir);
+        handsim.cards.contact.BudgetExceeded e = assertThrows(handsim.cards.contact.BudgetExceeded.class,
+                () -> tight.run(pinchAndLift(0, 0.006), null));
+        assertTrue(e.getMessage().matches("more than 40 Newton iterations by step \\d+ .*"), e.getMessage());
+        assertEquals(100.0, tight.inputs().get("budget").get("maxNewtonIterationsPerSecond").asDouble(), "the budget is recorded with the trial");
+    }
 }
