@@ -22,20 +22,17 @@ import java.util.Arrays;
  * the 8th the order is shuffled with the world's generator.
  *
  * <p>Until the first shuffle, consecutive rows of the same two bodies (a joint's rows, a contact's
- * friction pair) are swept as a block: each row's J fc is the block's starting fc times J plus
- * the earlier rows' impulse changes times their coupling J_k M^-1 J_i^T, computed once per step,
- * and fc takes the block's changes at its end, in row order. That is the same Gauss-Seidel
- * update, row after row; it only shortens the chain each row waits on, from the whole J fc of
- * the fc its predecessor changed to one product (the sums' last bits differ). Products are
- * accumulated with fused multiply-adds ({@link Math#fma}: one rounding, the CPU's FMA
+ * friction pair) are swept as a block: the two bodies' fc is read once at the block's start,
+ * kept in local variables while each row of the block takes J fc from it and adds its impulse
+ * change, and written back once at the block's end. That is the same Gauss-Seidel update, row
+ * after row; it spares each row the store and reload of the fc its predecessor changed. Products
+ * are accumulated with fused multiply-adds ({@link Math#fma}: one rounding, the CPU's FMA
  * instruction where it has one).
  */
 final class ProjectedSor {
 
     /** The shuffle period in iterations, ODE's. */
     private static final int SHUFFLE_PERIOD = 8;
-    /** The most rows of a block: a hinge's five and its stop, a ball's three and its Euler stops. */
-    private static final int MAX_BLOCK = 8;
 
     /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
     final double[] fc;
@@ -51,11 +48,6 @@ final class ProjectedSor {
     /** Block b holds packed rows [blockStart[b], blockStart[b + 1]). */
     private int[] blockStart = new int[1];
     private int blockCount;
-    /** Packed row k's couplings with the earlier rows i of its block, at MAX_BLOCK k + (i - block start). */
-    private double[] coupling = new double[0];
-    /** The impulse changes of the block being swept. */
-    private final double[] blockDelta = new double[MAX_BLOCK];
-
 
     ProjectedSor(int bodyCount) {
         fc = new double[6 * bodyCount];
@@ -99,7 +91,7 @@ final class ProjectedSor {
         for (int k = 0; k < m; k++) {
             scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
         }
-        couple(m);
+        findBlocks(m);
         boolean shuffled = false;
         for (int it = 0; it < iterations; it++) {
             if (it >= SHUFFLE_PERIOD && it % SHUFFLE_PERIOD == 0) {
@@ -119,45 +111,20 @@ final class ProjectedSor {
         }
     }
 
-    /**
-     * The blocks of the packed order (runs of rows of the same two bodies, at most MAX_BLOCK
-     * long) and each row's couplings J_k M^-1 J_i^T (J scaled) with the earlier rows i of its block.
-     */
-    private void couple(int m) {
+    /** The blocks of the packed order: runs of rows of the same two bodies. */
+    private void findBlocks(int m) {
         if (blockStart.length < m + 1) {
             blockStart = new int[order.length + 1];
-            coupling = new double[MAX_BLOCK * order.length];
         }
-        double[] d = data;
         blockCount = 0;
         int start = 0;
         for (int k = 1; k <= m; k++) {
-            if (k == m || k - start == MAX_BLOCK || meta[3 * k] != meta[3 * start] || meta[3 * k + 1] != meta[3 * start + 1]) {
+            if (k == m || meta[3 * k] != meta[3 * start] || meta[3 * k + 1] != meta[3 * start + 1]) {
                 blockStart[blockCount++] = start;
                 start = k;
             }
         }
         blockStart[blockCount] = m;
-        for (int bl = 0; bl < blockCount; bl++) {
-            int s = blockStart[bl];
-            boolean two = meta[3 * s + 1] >= 0;
-            for (int k = s + 1; k < blockStart[bl + 1]; k++) {
-                int o = STRIDE * k;
-                for (int i = s; i < k; i++) {
-                    int p = STRIDE * i;
-                    double sum = 0;
-                    for (int c = 0; c < 6; c++) {
-                        sum += d[o + J1 + c] * d[p + IMJ1 + c];
-                    }
-                    if (two) {
-                        for (int c = 0; c < 6; c++) {
-                            sum += d[o + J2 + c] * d[p + IMJ2 + c];
-                        }
-                    }
-                    coupling[MAX_BLOCK * k + i - s] = sum;
-                }
-            }
-        }
     }
 
     /**
@@ -243,15 +210,13 @@ final class ProjectedSor {
 
     /**
      * One Gauss-Seidel sweep over the packed rows in their order, block by block (see the class
-     * comment): the block's bodies' fc read once, each row's J fc from it and the couplings, fc
-     * written once after the block.
+     * comment): the block's bodies' fc read once, held in locals through the block's rows, and
+     * written once after it.
      */
     private void sweepBlocks() {
         double[] d = data;
         double[] lambda = this.lambda;
         double[] f = fc;
-        double[] cpl = coupling;
-        double[] bd = blockDelta;
         for (int bl = 0; bl < blockCount; bl++) {
             int s = blockStart[bl];
             int e = blockStart[bl + 1];
@@ -267,19 +232,11 @@ final class ProjectedSor {
                 c4 = f[b + 4];
                 c5 = f[b + 5];
             }
-            double previous = 0;
             for (int k = s; k < e; k++) {
                 int o = STRIDE * k;
                 double sum = Math.fma(a1, d[o + 1], a0 * d[o]) + Math.fma(a3, d[o + 3], a2 * d[o + 2]) + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
                 if (b >= 0) {
                     sum += Math.fma(c1, d[o + 7], c0 * d[o + 6]) + Math.fma(c3, d[o + 9], c2 * d[o + 8]) + Math.fma(c5, d[o + 11], c4 * d[o + 10]);
-                }
-                int q = MAX_BLOCK * k - s;
-                for (int i = s; i < k - 1; i++) {
-                    sum = Math.fma(bd[i - s], cpl[q + i], sum);
-                }
-                if (k > s) {
-                    sum = Math.fma(previous, cpl[q + k - 1], sum);
                 }
                 double old = lambda[k];
                 double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
@@ -301,12 +258,6 @@ final class ProjectedSor {
                     next = hi;
                 }
                 lambda[k] = next;
-                bd[k - s] = delta;
-                previous = delta;
-            }
-            for (int k = s; k < e; k++) {
-                int o = STRIDE * k;
-                double delta = bd[k - s];
                 a0 = Math.fma(delta, d[o + IMJ1], a0);
                 a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
                 a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
