@@ -62,8 +62,12 @@ final class BenchCommand implements Callable<Integer> {
     int workers;
 
     @Option(names = "--iterations", paramLabel = "N",
-            description = "quickStep iterations (default: configs/sim.json)")
+            description = "SOR iterations per step (default: configs/sim.json)")
     Integer iterations;
+
+    @Option(names = "--stepper", paramLabel = "S",
+            description = "the constrained step: handsim (handsim's own) or ode4j (ode4j's quickStep) (default: configs/sim.json)")
+    String stepper;
 
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
             description = "desired apex height of every throw of the loop scenario (m, world; default: ${DEFAULT-VALUE})")
@@ -103,19 +107,24 @@ final class BenchCommand implements Callable<Integer> {
         if (iterations != null && (iterations < 1 || iterations > 1000)) {
             throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
         }
+        if (stepper != null && !stepper.equals("handsim") && !stepper.equals("ode4j")) {
+            throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
+        }
         new OutputPaths().file("--json", json).check();
         HandModel model = Wiring.model(null);
         SimConfig base = Wiring.simConfig();
-        SimConfig config = iterations != null ? base.withSolverIterations(iterations) : base;
+        SimConfig iterated = iterations != null ? base.withSolverIterations(iterations) : base;
+        SimConfig config = stepper != null ? iterated.withStepper(SimConfig.Stepper.of(stepper)) : iterated;
         ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
 
         System.out.printf("bench %s: %d worker%s, %.0f s warm-up + %.0f s measured per worker, h = %.1f ms, "
-                + "quickStep iterations %d%n", scenario, workers, workers > 1 ? "s" : "", warmup, seconds,
-                config.timeStep() * 1e3, config.solverIterations());
+                + "%s step, %d iterations%n", scenario, workers, workers > 1 ? "s" : "", warmup, seconds,
+                config.timeStep() * 1e3, config.stepper().label(), config.solverIterations());
         ObjectNode out = JsonNodeFactory.instance.objectNode();
         out.put("scenario", scenario);
         out.put("object", thrown.name());
         out.put("time_step_s", config.timeStep());
+        out.put("stepper", config.stepper().label());
         out.put("solver_iterations", config.solverIterations());
         out.put("seconds_per_worker", seconds);
         out.put("workers", workers);
@@ -290,7 +299,7 @@ final class BenchCommand implements Callable<Integer> {
      * wall time (all start together), steps per CPU second is less sensitive to other load.
      */
     private static ObjectNode summarize(List<Run> runs, SimConfig config) {
-        long steps = 0, bytes = 0, engineBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
+        long steps = 0, bytes = 0, engineBytes = 0, solverBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
         double wallSum = 0;
         double wall = 0, cpu = 0;
         int episodes = 0, caught = 0, firstCatches = 0;
@@ -300,6 +309,7 @@ final class BenchCommand implements Callable<Integer> {
             steps += r.steps();
             bytes += r.bytes();
             engineBytes += r.engine().engineBytes();
+            solverBytes += r.engine().solverBytes();
             stepNs += r.engine().stepNanos();
             collisionNs += r.engine().collisionNanos();
             solverNs += r.engine().solverNanos();
@@ -321,6 +331,7 @@ final class BenchCommand implements Callable<Integer> {
         o.put("steps_per_cpu_s", steps / cpu);
         o.put("bytes_per_step", (double) bytes / steps);
         o.put("engine_bytes_per_step", (double) engineBytes / steps);
+        o.put("solver_bytes_per_step", (double) solverBytes / steps);
         // where the wall time of the loop goes, timed inside the simulator's step()
         ObjectNode shares = o.putObject("time_shares");
         double wallNs = wallSum * 1e9;
@@ -342,10 +353,12 @@ final class BenchCommand implements Callable<Integer> {
 
     private static void print(String label, ObjectNode o) {
         System.out.printf("  %s: %d steps in %.2f s: %.0f steps/s, %.2fx real time (%.0f steps per CPU second), "
-                + "%.0f bytes/step (ode4j %.0f, handsim %.0f); %d episodes, %d catches%n", label, o.get("steps").asLong(),
+                + "%.0f bytes/step (engine %.0f, of which the constrained step %.0f; controller and loop %.0f); %d episodes, "
+                + "%d catches%n", label, o.get("steps").asLong(),
                 o.get("wall_s").asDouble(), o.get("steps_per_s").asDouble(), o.get("realtime_factor").asDouble(),
                 o.get("steps_per_cpu_s").asDouble(), o.get("bytes_per_step").asDouble(), o.get("engine_bytes_per_step").asDouble(),
-                o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(), o.get("loops_caught").asInt());
+                o.get("solver_bytes_per_step").asDouble(), o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(),
+                o.get("loops_caught").asInt());
     }
 
     private static String formatShares(Map<String, Double> shares) {
@@ -364,7 +377,8 @@ final class BenchCommand implements Callable<Integer> {
     private static StepAccounting minus(StepAccounting now, StepAccounting from) {
         StepAccounting d = new StepAccounting();
         d.add(now.stepNanos() - from.stepNanos(), now.collisionNanos() - from.collisionNanos(),
-                now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes());
+                now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes(),
+                now.solverBytes() - from.solverBytes());
         return d;
     }
 

@@ -9,6 +9,7 @@ import handsim.cards.sleight.SnapTrial;
 import handsim.config.Home;
 import handsim.config.Json;
 import handsim.math.Vec3;
+import handsim.report.Outputs;
 import handsim.viewer.Camera;
 import handsim.viewer.FrameFolder;
 import handsim.viewer.OffscreenRenderer;
@@ -17,7 +18,6 @@ import handsim.viewer.ViewerConfig;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -54,12 +54,10 @@ final class CardsCommand implements Runnable {
         @Override
         public Integer call() throws IOException {
             scene.checkFrameSize();
+            new OutputPaths().heldFolder("--out", out, RECORDING).check();
             SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card);
             SnapParams p = params == null ? trial.scene().config().defaults() : SnapParams.parse(Json.load(params));
             p.validate(trial.scene().config().duration(), params == null ? null : params.toString());
-            if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
-                throw new IllegalArgumentException("--out " + out + " is a file, not a folder");
-            }
             System.out.printf("handsim cards snap: %s fingertips, %d nodes (%d free), %s cards%n", trial.scene().config().meshName(),
                     trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(), scene.card == null ? "default" : scene.card);
             long h0 = System.nanoTime();
@@ -73,6 +71,9 @@ final class CardsCommand implements Runnable {
             return 0;
         }
     }
+
+    /** What a recording folder holds ({@link #writeRecording}). */
+    static final String[] RECORDING = {"result.json", "trajectory.json", "strip.png", "frames/"};
 
     /** A trial's result and the trajectory recorded while it ran. */
     record Recorded(SnapResult result, Trajectory trajectory) {
@@ -140,9 +141,7 @@ final class CardsCommand implements Runnable {
             writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
             System.out.println("wrote " + out.resolve("strip.png") + " (" + STRIP_FRAMES + " frames, start to end)");
         }
-        Path tmp = out.resolve("result.json.tmp");
-        Files.writeString(tmp, Json.pretty(result));
-        Files.move(tmp, out.resolve("result.json"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writeString(out.resolve("result.json"), Json.pretty(result) + "\n");
         System.out.println("wrote " + out.resolve("result.json"));
     }
 

@@ -96,9 +96,8 @@ final class CardsOptimize implements Callable<Integer> {
         SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, RunOptions.keyValues(overrides));
         SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
         Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
-        if (Files.exists(dir) && !Files.isDirectory(dir)) {
-            throw new IllegalArgumentException("--out " + dir + " is a file, not a folder");
-        }
+        new OutputPaths().heldFolder("--out", dir, Study.STUDY_FILE, Study.BEST_FILE, "history.png", Study.TRIALS_DIR + "/",
+                BEST_DIR + "/").check();
 
         ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs());
         // a cluster is reached before the study folder is made: a master that cannot be used leaves nothing behind

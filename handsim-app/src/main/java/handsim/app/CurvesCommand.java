@@ -39,6 +39,7 @@ final class CurvesCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        runs.forEach(r -> OutputPaths.input(r.resolve(TrainRun.METRICS)));
         new OutputPaths().file("--out", out).check();
         List<List<EpisodeStats>> all = new ArrayList<>();
         for (Path r : runs) {

@@ -46,6 +46,9 @@ final class DaggerCommand implements Callable<Integer> {
         if (initActor != null && run.resume != null) {
             throw new IllegalArgumentException("--init-actor starts a new run: a resumed run keeps the start saved in its folder");
         }
+        if (run.resume != null) {
+            RunFolders.hold("--resume", run.resume); // one process at a time on a run folder
+        }
         Json file = run.resume == null ? run.configFile() : null;
         DaggerRunConfig c = run.resume == null ? DaggerRunConfig.parse(file) : DaggerRun.savedConfig(run.resume);
         RunConfigs configs = run.resume == null ? TrainCommand.configs(c.run()) : TrainCommand.recorded(run.resume, c.run());

@@ -6,6 +6,7 @@ import handsim.config.Home;
 import handsim.evaluation.CatchEvaluation;
 import handsim.report.Outputs;
 import handsim.report.Plot;
+import handsim.report.Stop;
 import handsim.scene.SceneSetup;
 import handsim.sim.Simulator;
 import handsim.task.CatchThrowEpisode;
@@ -39,7 +40,8 @@ import picocli.CommandLine.Option;
                 + "or club it flips the object and catches it lying in the hand, over and over, with the shipped flip policy "
                 + "(models/policies/flip-<object>.json, the learned controller alone). "
                 + "Opens the viewer when there is a display (Esc quits); otherwise (or with --headless) runs --loops throws "
-                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder.")
+                + "headless and writes summary.json, loops.csv and apex.png (flips: rotation.png) to a run folder (stopped by "
+                + "SIGTERM or Ctrl-C, the throws made so far, marked interrupted).")
 final class DemoCommand implements Callable<Integer> {
 
     @Mixin
@@ -65,6 +67,9 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--export", paramLabel = "FILE", description = "headless: also write the run's animation (FILE.glb, "
             + "FILE.gltf or FILE.bvh; see export)")
     Path export;
+
+    /** What a headless demo writes into its run folder. */
+    private static final String[] RUN_FILES = {"summary.json", "loops.csv", "apex.png", "rotation.png"};
 
     /** The controller the headless run uses. */
     private String controllerShown = "nominal";
@@ -105,7 +110,7 @@ final class DemoCommand implements Callable<Integer> {
                 System.out.println("handsim demo: no display (DISPLAY is not set): running " + loops + " throws headless");
             }
             RunExport flipExport = RunExport.to(export);
-            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out)
+            new FlipDemo(object, seed, loops).run(out != null ? RunFolders.claimGiven("--out", out, RUN_FILES)
                     : RunFolders.claim(runs, "--runs", "demo", object, seed), flipExport);
             return 0;
         }
@@ -124,7 +129,8 @@ final class DemoCommand implements Callable<Integer> {
         CatchEvaluation evaluation = new CatchEvaluation(Wiring.controllerConfig(), limits, Wiring.launches(),
                 Wiring.object(episodeOptions.object), task, controller.equals("learned")
                         ? ThrowPolicyFile.load(shippedPolicy(episodeOptions.object)).forTask(task, Wiring.object(episodeOptions.object)) : obs -> task.nominalThrow());
-        Path dir = out != null ? RunFolders.claimGiven("--out", out) : RunFolders.claim(runs, "--runs", "demo", episodeOptions.object, episodeOptions.seed);
+        Path dir = out != null ? RunFolders.claimGiven("--out", out, RUN_FILES)
+                : RunFolders.claim(runs, "--runs", "demo", episodeOptions.object, episodeOptions.seed);
         System.out.printf("handsim demo: the %s controller%s, goals %.2f-%.2f m%n", controller, controller.equals("learned")
                 ? " (" + Home.root().relativize(shippedPolicy(episodeOptions.object)) + ")" : "", goals.low(), goals.high());
         this.controllerShown = controller;
@@ -147,8 +153,8 @@ final class DemoCommand implements Callable<Integer> {
         List<Long> throwSeeds = new ArrayList<>();
         int episodes = 0, firstCatchMisses = 0, failedInARow = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
-            for (long s = episodeOptions.seed; throwsMade.size() < loops; s++) {
+        try (Stop.Watch watch = Stop.watch(); Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
+            for (long s = episodeOptions.seed; throwsMade.size() < loops && !Stop.requested(); s++) {
                 if (failedInARow == limits.maxFailedThrowIns()) {
                     throw new RunFailed("gave up after " + failedInARow + " throw-ins in a row that the hand did not catch "
                             + "(seeds " + (s - failedInARow) + "-" + (s - 1) + "; configs/episode.json maxFailedThrowIns), "
@@ -157,7 +163,7 @@ final class DemoCommand implements Callable<Integer> {
                 episodes++;
                 boolean caughtIn = false;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
-                while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops) {
+                while (episode.status() == CatchThrowEpisode.Status.RUNNING && throwsMade.size() < loops && !Stop.requested()) {
                     LoopRecord r = evaluation.tick(episode, s); // a divergence names the seed and loop
                     if (exported != null) {
                         exported.afterTick(sim);
@@ -181,6 +187,7 @@ final class DemoCommand implements Callable<Integer> {
         }
         double wall = (System.nanoTime() - t0) / 1e9;
         writeRun(dir, throwsMade, throwSeeds, episodes, firstCatchMisses, goals, wall);
+        Stop.check("the " + throwsMade.size() + " throws made are in " + dir.resolve("summary.json") + ", marked interrupted");
         if (exported != null) {
             exported.write("handsim demo: height task, " + episodeOptions.object + ", " + controllerShown + " controller, seed " + episodeOptions.seed);
         }
@@ -219,6 +226,9 @@ final class DemoCommand implements Callable<Integer> {
         summary.put("height_error_abs_mean_m", n > 0 ? absError / n : Double.NaN);
         summary.put("height_error_abs_max_m", maxAbsError);
         summary.put("wall_s", wall);
+        if (Stop.requested()) {
+            summary.put("interrupted", Stop.signal() + " after " + n + " of " + loops + " throws");
+        }
         Outputs.writeJson(dir.resolve("summary.json"), summary);
         Outputs.writeString(dir.resolve("loops.csv"), csv.toString());
         new Plot("Apex height per throw (" + episodeOptions.object + ", " + controllerShown + " controller)", "throw", "height (m)")

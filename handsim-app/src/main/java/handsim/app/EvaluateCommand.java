@@ -202,12 +202,18 @@ final class EvaluateCommand implements Callable<Integer> {
     private EpisodeJournal openJournal(ObjectNode record, String commit) {
         ObjectNode signature = record.deepCopy();
         signature.remove(List.of("episodes", "tests"));
-        EpisodeJournal journal = EpisodeJournal.open(json.resolveSibling(json.getFileName() + ".episodes.jsonl"), signature, commit);
+        EpisodeJournal journal = EpisodeJournal.open(journalFile(), signature, commit);
+        StopRecords.evaluation(json, journal, spec.commandLine().getParseResult().originalArgs(), commit);
         if (journal.finished() > 0) {
             System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
                     journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
         }
         return journal;
+    }
+
+    /** Where --json's finished episodes are kept while the run goes: FILE.episodes.jsonl. */
+    private Path journalFile() {
+        return json.resolveSibling(json.getFileName() + ".episodes.jsonl");
     }
 
     private static EvaluationSetup withJournal(EvaluationSetup s, EpisodeJournal journal) {
@@ -244,7 +250,12 @@ final class EvaluateCommand implements Callable<Integer> {
             String name = json.getFileName().toString();
             plot = json.resolveSibling((name.endsWith(".json") ? name.substring(0, name.length() - 5) : name) + ".png");
         }
-        new OutputPaths().file("--json", json).file("--csv", csv).file("--plot", plot).check();
+        if (specFile != null) { // the policies of a recorded run are named by no option
+            run.policies().forEach((role, file) -> OutputPaths.input(file, "the " + role.replace('_', ' ') + " recorded in --spec "
+                    + specFile));
+        }
+        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : journalFile()).file("--csv", csv)
+                .file("--plot", plot).check();
         return RunExport.to(export);
     }
 

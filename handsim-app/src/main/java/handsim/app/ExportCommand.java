@@ -63,7 +63,9 @@ final class ExportCommand implements Callable<Integer> {
             throw new IllegalArgumentException(String.format(Locale.ROOT, "--seconds %s is shorter than one sample at --rate %s Hz "
                     + "(an animation needs two)", scene.seconds, rate));
         }
+        new OutputPaths().file("--out", out).check(); // first: the folder it makes is given up again if the export fails
         ExportTarget target = ExportTarget.of(out, format, "--out", "--format");
+        new OutputPaths().files("--out", target.files()).check();
         ViewerConfig config = ViewerSession.config();
         ExportOptions options = ExportLook.options(config, floor, goal, camera ? Optional.of(new Camera(config.camera())) : Optional.empty());
         long t0 = System.nanoTime();

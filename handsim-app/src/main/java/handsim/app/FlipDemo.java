@@ -8,6 +8,7 @@ import handsim.evaluation.CatchEvaluation;
 import handsim.evaluation.FlipReport;
 import handsim.report.Outputs;
 import handsim.report.Plot;
+import handsim.report.Stop;
 import handsim.sim.ObjectSpec;
 import handsim.sim.Simulator;
 import handsim.task.CatchThrowEpisode;
@@ -29,7 +30,8 @@ import java.util.Locale;
  * learned controller alone) or, when none ships for the object, the nominal flip. Each throw is
  * printed with its turn in flight and how it ended; a throw that fails only breaks the count of
  * loops in a row, a drop starts the next episode (seed + 1). Writes summary.json, loops.csv and a
- * picture of each throw's turn to the run folder.
+ * picture of each throw's turn to the run folder; stopped by a signal, it writes the throws made
+ * so far, marked interrupted.
  */
 final class FlipDemo {
 
@@ -79,11 +81,11 @@ final class FlipDemo {
         List<Long> seeds = new ArrayList<>();
         int episodes = 0, inARow = 0, longest = 0;
         long t0 = System.nanoTime();
-        try (Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
-            for (long s = seed; made.size() < throwsWanted; s++) {
+        try (Stop.Watch watch = Stop.watch(); Simulator sim = Wiring.simulator(Wiring.model(null), Wiring.simConfig())) {
+            for (long s = seed; made.size() < throwsWanted && !Stop.requested(); s++) {
                 episodes++;
                 CatchThrowEpisode episode = evaluation.start(sim, s);
-                while (episode.status() == CatchThrowEpisode.Status.RUNNING && made.size() < throwsWanted) {
+                while (episode.status() == CatchThrowEpisode.Status.RUNNING && made.size() < throwsWanted && !Stop.requested()) {
                     LoopRecord r = evaluation.tick(episode, s);
                     if (exported != null) {
                         exported.afterTick(sim);
@@ -107,6 +109,7 @@ final class FlipDemo {
             }
         }
         write(dir, task, controller, policy, made, seeds, episodes, longest, (System.nanoTime() - t0) / 1e9);
+        Stop.check("the " + made.size() + " throws made are in " + dir.resolve("summary.json") + ", marked interrupted");
         if (exported != null) {
             exported.write("handsim demo: flip task, " + object + ", " + controller + " controller, seed " + seed);
         }
@@ -131,6 +134,9 @@ final class FlipDemo {
         }
         summary.put("episodes", episodes);
         summary.put("wall_s", wall);
+        if (Stop.requested()) {
+            summary.put("interrupted", Stop.signal() + " after " + made.size() + " of " + throwsWanted + " throws");
+        }
         StringBuilder csv = new StringBuilder("throw,episode_seed,flight_rotation_deg,release_spin_rad_s,arrival_tilt_deg,catch_tilt_deg,"
                 + "catch_heading_deg,success,failure\n");
         int n = made.size();

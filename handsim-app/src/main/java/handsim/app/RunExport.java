@@ -31,7 +31,13 @@ final class RunExport implements CatchEvaluation.TickWatcher {
 
     /** The export to {@code file}, checked now; null when no file is given. */
     static RunExport to(Path file) {
-        return file == null ? null : new RunExport(ExportTarget.of(file, null, "--export", "--export"));
+        if (file == null) {
+            return null;
+        }
+        new OutputPaths().file("--export", file).check(); // first: the folder it makes is given up again if the run fails
+        ExportTarget target = ExportTarget.of(file, null, "--export", "--export");
+        new OutputPaths().files("--export", target.files()).check();
+        return new RunExport(target);
     }
 
     @Override

@@ -1,6 +1,7 @@
 package handsim.app;
 
 import handsim.config.Home;
+import handsim.report.Locks;
 import java.io.IOException;
 import java.nio.file.DirectoryNotEmptyException;
 import java.nio.file.FileAlreadyExistsException;
@@ -14,7 +15,8 @@ import java.util.stream.Stream;
  * Run folders of demo, train and warmstart: {@code KIND__NAME__SEED__yyyyMMdd-HHmmss}, under
  * runs/ unless told otherwise. A run claims its folder by creating it (an atomic create that
  * fails if the folder exists), so two runs started in the same second never share one: the
- * second gets the name with {@code -2} (then {@code -3}, ...) appended.
+ * second gets the name with {@code -2} (then {@code -3}, ...) appended. A run holds its folder
+ * ({@link Locks}) while it runs: {@code train --resume} of a folder in use is refused.
  */
 final class RunFolders {
 
@@ -27,7 +29,8 @@ final class RunFolders {
 
     /**
      * A new run's folder, named by what it is and when it started, created in {@code base}
-     * ({@code option}'s value; null: the project's runs/), and claimed for this run alone.
+     * ({@code option}'s value; null: the project's runs/), and held by this process alone
+     * ({@link Locks}) until the command ends.
      */
     static Path claim(Path base, String option, String kind, String name, long seed) {
         if (!name.matches(NAME) || name.length() > 100) {
@@ -40,44 +43,51 @@ final class RunFolders {
         for (int n = 1; ; n++) {
             Path run = dir.resolve(n == 1 ? stem : stem + "-" + n);
             try {
-                return Files.createDirectory(run);
+                Files.createDirectory(run);
             } catch (FileAlreadyExistsException taken) {
-                // another run started in the same second: try the next suffix
+                continue; // another run started in the same second: try the next suffix
             } catch (IOException e) {
                 throw new IllegalArgumentException(option + " " + dir + ": cannot create a run folder there ("
                         + OutputPaths.reason(e) + ")");
             }
+            OutputPaths.created(run);
+            Locks.holdFolder(run, "the run folder " + run, note -> System.out.println("handsim: " + note));
+            return run;
         }
     }
 
     /**
-     * The folder {@code option} names for one run: created, or an existing empty folder; a
-     * folder that already holds files (another run's?) is refused.
+     * The folder {@code option} names for one run, held by this process alone ({@link Locks}):
+     * created, or an existing empty folder; a folder that already holds files (another run's?)
+     * is refused. {@code inside} names what the run writes there (checked by {@link OutputPaths}).
      */
-    static Path claimGiven(String option, Path dir) {
-        new OutputPaths().folder(option, dir.toAbsolutePath().getParent()).check();
-        try {
-            return Files.createDirectory(dir);
-        } catch (FileAlreadyExistsException exists) {
-            if (!Files.isDirectory(dir)) {
-                throw new IllegalArgumentException(option + " " + dir + " is a file, not a folder");
+    static Path claimGiven(String option, Path dir, String... inside) {
+        new OutputPaths().heldFolder(option, dir, inside).check();
+        try (Stream<Path> files = Files.list(dir)) {
+            if (files.anyMatch(f -> !Locks.isLockFile(f.getFileName().toString()))) {
+                throw new IllegalArgumentException(option + " " + dir + " already holds files (another run's?): give "
+                        + "a new or empty folder");
             }
-            try (Stream<Path> inside = Files.list(dir)) {
-                if (inside.findAny().isPresent()) {
-                    throw new IllegalArgumentException(option + " " + dir + " already holds files (another run's?): give "
-                            + "a new or empty folder");
-                }
-            } catch (IOException e) {
-                throw new IllegalArgumentException(option + " " + dir + ": cannot read it (" + OutputPaths.reason(e) + ")");
-            }
-            return dir;
         } catch (IOException e) {
-            throw new IllegalArgumentException(option + " " + dir + ": cannot create it (" + OutputPaths.reason(e) + ")");
+            throw new IllegalArgumentException(option + " " + dir + ": cannot read it (" + OutputPaths.reason(e) + ")");
         }
+        return dir;
+    }
+
+    /**
+     * Holds the existing run folder {@code dir} that {@code option} names ({@code train --resume
+     * RUN}) for this process alone: a second process on it is refused at once.
+     */
+    static void hold(String option, Path dir) {
+        if (!Files.isDirectory(dir)) {
+            throw new IllegalArgumentException(option + " " + dir + " is not a run folder (no such folder)");
+        }
+        Locks.holdFolder(dir, option + " " + dir, note -> System.out.println("handsim: " + note));
     }
 
     /** Gives up a claimed folder that a failed run left empty (a folder with files in it stays). */
     static void release(Path dir) {
+        Locks.release(dir);
         try {
             Files.deleteIfExists(dir);
         } catch (DirectoryNotEmptyException | SecurityException kept) {

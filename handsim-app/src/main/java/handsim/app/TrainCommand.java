@@ -83,6 +83,9 @@ final class TrainCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--episodes extends a run given with --resume; a new run sets its budget "
                     + "with --set training.episodes=N");
         }
+        if (run.resume != null) {
+            RunFolders.hold("--resume", run.resume); // one process at a time on a run folder
+        }
         TrainConfig c = run.resume == null ? TrainConfig.parse(run.configFile()) : TrainRun.savedConfig(run.resume);
         RunConfigs configs = run.resume == null ? configs(c.run()) : recorded(run.resume, c.run());
         ThrowEnvFactory envs = environments(c.run(), configs);
@@ -99,7 +102,7 @@ final class TrainCommand implements Callable<Integer> {
     private static void tellLauncher(Path dir) throws IOException {
         String file = System.getProperty(RUN_DIR_FILE_PROPERTY);
         if (file != null) {
-            Files.writeString(Path.of(file), dir.toAbsolutePath().toString());
+            Outputs.writeString(Path.of(file), dir.toAbsolutePath().toString());
         }
     }
 
@@ -116,9 +119,14 @@ final class TrainCommand implements Callable<Integer> {
         return Files.isRegularFile(spec) ? new RunConfigs(ConfigSet.replaying(Json.load(spec))) : configs(run);
     }
 
-    /** Records in {@code dir} every configuration document the run has read. */
+    /**
+     * Records in {@code dir} every configuration document the run has read; a run that replays
+     * its folder's record ({@link #recorded}) leaves it as it is, since it is this run's input.
+     */
     static void recordSpec(Path dir, RunConfigs configs) throws IOException {
-        Outputs.writeJson(dir.resolve(SPEC), configs.files().toJson());
+        if (!configs.files().replays()) {
+            Outputs.writeJson(dir.resolve(SPEC), configs.files().toJson());
+        }
     }
 
     /** The project's configs with the fields of the task's file that the run changes ({@link TrainConfig.Run#taskSet}). */

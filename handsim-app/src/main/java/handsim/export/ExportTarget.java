@@ -1,20 +1,18 @@
 package handsim.export;
 
+import handsim.report.Outputs;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
 /**
  * Where and how a run's animation is written, checked before anything is simulated: the format
  * (glTF or BVH, named or read from the file's extension), the file's extension, and that its
- * folder can be written. {@link #write} writes into temporary files beside the target and moves
- * them into place, so a failed or interrupted export leaves no partial file.
+ * folder can be written. {@link #write} writes through {@link Outputs} (a temporary file beside
+ * the target moved into place), so a failed or interrupted export leaves no partial file.
  */
 public final class ExportTarget {
 
@@ -122,24 +120,11 @@ public final class ExportTarget {
         return file.resolveSibling(name.substring(0, name.length() - ".gltf".length()) + ".bin");
     }
 
-    /** Writes every file to a temporary one beside it, then moves them into place in order; on failure deletes the temporaries. */
+    /** Writes every file atomically ({@link Outputs}), in order: a .gltf is never in place without its .bin. */
     private static void writeAtomically(List<Path> targets, List<byte[]> contents) throws IOException {
-        List<Path> temps = new ArrayList<>();
-        try {
-            for (int i = 0; i < targets.size(); i++) {
-                Path t = targets.get(i);
-                // a fresh name beside the target, created with the usual permissions (not a temp file's owner-only ones)
-                Path tmp = t.resolveSibling("." + t.getFileName() + "." + Long.toHexString(System.nanoTime()) + ".tmp");
-                temps.add(tmp);
-                Files.write(tmp, contents.get(i), StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-            }
-            for (int i = 0; i < targets.size(); i++) {
-                Files.move(temps.get(i), targets.get(i), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            }
-        } finally {
-            for (Path tmp : temps) {
-                Files.deleteIfExists(tmp);
-            }
+        for (int i = 0; i < targets.size(); i++) {
+            byte[] bytes = contents.get(i);
+            Outputs.write(targets.get(i), out -> out.write(bytes));
         }
     }
 

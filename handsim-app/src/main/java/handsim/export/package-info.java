@@ -10,7 +10,8 @@
  *
  * <p>Imports {@code handsim.math}, {@code handsim.model}, {@code handsim.kin},
  * {@code handsim.mesh}, {@code handsim.sim} (snapshots and object specs only),
- * {@code handsim.task.Goal} (what the goal looks like) and Jackson (glTF's JSON); no OpenGL,
+ * {@code handsim.task.Goal} (what the goal looks like), {@code handsim.report} (its files are
+ * written through {@code Outputs}) and Jackson (glTF's JSON); no OpenGL,
  * no physics engine.
  */
 package handsim.export;

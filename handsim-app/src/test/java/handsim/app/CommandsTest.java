@@ -676,6 +676,17 @@ class CommandsTest {
             assertTrue(spec.has(read), read + " is recorded: " + spec.fieldNames());
         }
         assertEquals(Json.load(handsim.config.Home.resolve("configs/sim.json")).node(), spec.get("configs/sim.json"), "as the file reads");
+        // a resume reads the record as its input and leaves the file as it is (the same file, not a copy written over it)
+        Object recordFile = Files.readAttributes(run.resolve(TrainCommand.SPEC), java.nio.file.attribute.BasicFileAttributes.class).fileKey();
+        try {
+            System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+            code = Main.run("train", "--resume", run.toString(), "--episodes", "2");
+        } finally {
+            System.setOut(stdout);
+        }
+        assertEquals(0, code);
+        assertEquals(recordFile, Files.readAttributes(run.resolve(TrainCommand.SPEC), java.nio.file.attribute.BasicFileAttributes.class)
+                .fileKey(), "spec.json untouched by the resume");
     }
 
     @Test

@@ -1,5 +1,6 @@
 package handsim.config;
 
+import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -26,8 +27,12 @@ import java.util.Set;
  */
 public final class Json {
 
-    /** Strict: text after the JSON value (a second object, a stray character) is an error too. */
-    private static final ObjectMapper MAPPER = new ObjectMapper().enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
+    /**
+     * Strict: text after the JSON value (a second object, a stray character) is an error too, and
+     * so is a key given twice in one object (else the last one would silently win).
+     */
+    private static final ObjectMapper MAPPER = new ObjectMapper().enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION);
 
     private final String source;
     private final String path;
@@ -82,6 +87,9 @@ public final class Json {
     static String plain(String message) {
         if (message.contains("ALLOW_NON_NUMERIC_NUMBERS")) {
             return message.replaceFirst(":.*", "") + " (NaN and Infinity are not JSON numbers)";
+        }
+        if (message.startsWith("Duplicate field")) {
+            return message.replaceFirst("Duplicate field '(.*)'.*", "the key \"$1\" appears twice in one object (which one is meant?)");
         }
         if (message.contains("ALLOW_COMMENTS")) {
             return "a comment, which JSON does not have (use a \"comment\" field)";

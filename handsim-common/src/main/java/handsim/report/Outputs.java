@@ -6,10 +6,11 @@ import com.fasterxml.jackson.databind.node.NullNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import java.awt.image.RenderedImage;
+import java.io.BufferedOutputStream;
+import java.io.FileOutputStream;
 import java.io.FilterOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
-import java.nio.channels.Channels;
 import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
@@ -64,17 +65,26 @@ public final class Outputs {
     private Outputs() {
     }
 
-    /** Writes {@code file} atomically with the bytes {@code writer} produces; creates its folder if needed. */
+    /**
+     * Writes {@code file} atomically with the bytes {@code writer} produces; creates its folder if
+     * needed. The bytes go to a temporary file of a name no other write uses (this process's id
+     * and a counter), which is forced to disk and renamed over the target; the folder is then
+     * forced too, so the rename itself survives a power cut. Plain streams, not NIO channels:
+     * an interrupt of the writing thread does not break the write off. A failure (a full disk, a
+     * folder that cannot be written) deletes the temporary file and is a {@link
+     * FileSystemException} naming the target and the reason.
+     */
     public static void write(Path file, Writer writer) throws IOException {
         Path abs = file.toAbsolutePath();
         Path dir = abs.getParent();
-        Files.createDirectories(dir);
-        sweepOnce(dir);
         Path tmp = temporary(abs);
         IN_FLIGHT.add(tmp);
         try {
-            try (FileChannel channel = FileChannel.open(tmp, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE)) {
-                OutputStream out = new java.io.BufferedOutputStream(Channels.newOutputStream(channel), 1 << 16);
+            Files.createDirectories(dir);
+            sweepOnce(dir);
+            Files.createFile(tmp);
+            try (FileOutputStream stream = new FileOutputStream(tmp.toFile())) {
+                OutputStream out = new BufferedOutputStream(stream, 1 << 16);
                 writer.write(new FilterOutputStream(out) {
                     @Override
                     public void write(byte[] b, int off, int len) throws IOException {
@@ -83,17 +93,40 @@ public final class Outputs {
 
                     @Override
                     public void close() throws IOException {
-                        out.flush(); // the channel stays open until forced to disk
+                        out.flush(); // the file stays open until forced to disk
                     }
                 });
                 out.flush();
-                channel.force(true);
+                stream.getFD().sync();
             }
             Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            syncFolder(dir);
+        } catch (IOException e) {
+            throw failed(abs, e);
         } finally {
-            Files.deleteIfExists(tmp);
+            deleteQuietly(tmp);
             IN_FLIGHT.remove(tmp);
         }
+    }
+
+    /**
+     * Appends {@code bytes} to {@code file} (created if missing) and forces them to disk before
+     * returning: a journal's line, a metrics row. The one kind of write that is not atomic, so
+     * its readers drop a partial last line (what a kill during an append leaves).
+     */
+    public static void append(Path file, byte[] bytes) throws IOException {
+        Path abs = file.toAbsolutePath();
+        try (FileOutputStream out = new FileOutputStream(abs.toFile(), true)) {
+            out.write(bytes);
+            out.getFD().sync();
+        } catch (IOException e) {
+            throw failed(abs, e);
+        }
+    }
+
+    /** Writes a copy of {@code from} as {@code to}, atomically. */
+    public static void copy(Path from, Path to) throws IOException {
+        write(to, out -> Files.copy(from, out));
     }
 
     /**
@@ -134,8 +167,11 @@ public final class Outputs {
                 Files.copy(file, tmp);
             }
             Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            syncFolder(abs.getParent());
+        } catch (IOException e) {
+            throw failed(abs, e);
         } finally {
-            Files.deleteIfExists(tmp);
+            deleteQuietly(tmp);
             IN_FLIGHT.remove(tmp);
         }
     }
@@ -174,6 +210,32 @@ public final class Outputs {
 
     private static Path temporary(Path target) {
         return target.resolveSibling("." + target.getFileName() + MARK + PID + "-" + COUNTER.incrementAndGet() + ".tmp");
+    }
+
+    /**
+     * Forces a folder's entries to disk (where the system allows a folder to be opened for it),
+     * so that a file just renamed into it is there after a crash.
+     */
+    private static void syncFolder(Path dir) {
+        try (FileChannel channel = FileChannel.open(dir, StandardOpenOption.READ)) {
+            channel.force(true);
+        } catch (IOException | RuntimeException e) {
+            // some systems cannot open a folder for this: the file itself is on disk already
+        }
+    }
+
+    /** A failed write as one that names its target and says why in a few words (Java's messages are often just a path). */
+    private static FileSystemException failed(Path target, IOException e) {
+        if (e instanceof FileSystemException f && target.toString().equals(f.getFile())) {
+            return f;
+        }
+        String reason = e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+                : e instanceof java.nio.file.NoSuchFileException ? "no such folder"
+                : e instanceof FileSystemException f && f.getReason() != null ? f.getReason()
+                : e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+        FileSystemException named = new FileSystemException(target.toString(), null, "cannot write it: " + reason);
+        named.initCause(e);
+        return named;
     }
 
     private static void deleteQuietly(Path p) {

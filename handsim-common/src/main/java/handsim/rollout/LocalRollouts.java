@@ -1,5 +1,6 @@
 package handsim.rollout;
 
+import handsim.report.Stop;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collections;
@@ -8,6 +9,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
@@ -21,6 +23,9 @@ import java.util.function.Supplier;
  * IsolatedEngine}, which gives each its own copy of the engine's statics.
  */
 public final class LocalRollouts<W> implements Rollouts<W> {
+
+    /** How often the caller, waiting for rollouts, looks for a stop request (ms): well below a person's patience. */
+    private static final long STOP_POLL_MILLIS = 100;
 
     private final int workers;
     private final Supplier<W> resources;
@@ -71,7 +76,7 @@ public final class LocalRollouts<W> implements Rollouts<W> {
             running.add(pool.submit(() -> {
                 try {
                     RolloutTask.Rollout<R> rollout = task.prepare(resource(worker));
-                    for (int i = next.getAndIncrement(); i < count && !stop.get(); i = next.getAndIncrement()) {
+                    for (int i = next.getAndIncrement(); i < count && !stop.get() && !Stop.requested(); i = next.getAndIncrement()) {
                         done.add(new Done(i, rollout.run(i), null));
                     }
                 } catch (Throwable t) {
@@ -82,9 +87,18 @@ public final class LocalRollouts<W> implements Rollouts<W> {
         Object[] results = new Object[count];
         boolean[] finished = new boolean[count];
         int emitted = 0;
-        try {
+        boolean abandoned = false;
+        try (Stop.Watch watch = Stop.watch()) {
             for (int received = 0; received < count; received++) {
-                Done d = done.take();
+                Done d = done.poll(STOP_POLL_MILLIS, TimeUnit.MILLISECONDS);
+                if (d == null) {
+                    if (Stop.requested()) {
+                        abandoned = true; // the rollouts under way are left to the workers, not waited for
+                        Stop.check(emitted + " of " + count + " rollouts finished, the ones under way abandoned");
+                    }
+                    received--;
+                    continue;
+                }
                 if (d.failure() != null) {
                     stop.set(true);
                     throw rethrow(d.failure());
@@ -104,7 +118,9 @@ public final class LocalRollouts<W> implements Rollouts<W> {
             throw new IllegalStateException("interrupted while waiting for rollouts", e);
         } finally {
             stop.set(true);
-            awaitAll(running);
+            if (!abandoned) {
+                awaitAll(running);
+            }
         }
         @SuppressWarnings("unchecked")
         List<R> out = (List<R>) Arrays.asList(results);

@@ -17,7 +17,9 @@
  * }</pre>
  *
  * Workers of one JVM must not share engine state: ode4j's statics (its random generator above
- * all) are per class loader, hence {@code handsim.sim.ode.IsolatedEngine}.
+ * all) are per class loader, hence {@code handsim.sim.ode.IsolatedEngine}. A stop request
+ * ({@code handsim.report.Stop}: SIGTERM, SIGINT) ends a run at once, leaving the rollouts under
+ * way to their workers.
  *
  * <p>The same work runs on a cluster ({@link handsim.rollout.RemoteRollouts} over {@link
  * handsim.rollout.RemoteCalls}, whose engine a {@link handsim.rollout.RemoteBackend} found by
@@ -25,7 +27,7 @@
  * data from which an executor rebuilds the task and its worker's resource, and results come back
  * as JSON that reads back bit for bit, so they are the thread pool's.
  *
- * <p>Imports {@code handsim.config} (JSON) and nothing else of handsim: what a worker owns is a
- * type parameter.
+ * <p>Imports {@code handsim.config} (JSON) and {@code handsim.report} and nothing else of handsim:
+ * what a worker owns is a type parameter.
  */
 package handsim.rollout;

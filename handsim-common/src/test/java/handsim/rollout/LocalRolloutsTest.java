@@ -2,13 +2,16 @@ package handsim.rollout;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import handsim.report.Stop;
 
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
-/** The thread pool of rollouts: results in index order whatever the workers, failures rethrown. */
+/** The thread pool of rollouts: results in index order whatever the workers, failures rethrown, a stop request heard at once. */
 @Tag("fast")
 class LocalRolloutsTest {
 
@@ -39,6 +42,27 @@ class LocalRolloutsTest {
             }));
             assertEquals("rollout 3 failed", e.getMessage());
             assertEquals(List.of(0, 1, 2, 3, 4), rollouts.run(5, sim -> i -> i), "the workers are usable after a failure");
+        }
+    }
+
+    @Test
+    void aStopRequestEndsTheRunAtOnceWithoutWaitingForTheRolloutsUnderWay() {
+        try (Rollouts<Object> rollouts = new LocalRollouts<>(2, Object::new)) {
+            long t0 = System.nanoTime();
+            Stop.Stopped stopped = assertThrows(Stop.Stopped.class, () -> rollouts.run(4, worker -> i -> {
+                if (i == 1) {
+                    Stop.request("SIGTERM"); // as the signal handler does, while rollout 0 is still under way
+                }
+                java.util.concurrent.locks.LockSupport.parkNanos(i == 0 ? 3_000_000_000L : 0);
+                return i;
+            }));
+            double seconds = (System.nanoTime() - t0) * 1e-9;
+            // the caller looks for a request every 0.1 s: it is back well before rollout 0's 3 s are over
+            assertTrue(seconds < 1.5, "stopped after " + seconds + " s");
+            assertEquals(143, stopped.status(), "128 + SIGTERM's 15");
+            assertTrue(stopped.getMessage().startsWith("stopped by SIGTERM: "), stopped.getMessage());
+        } finally {
+            Stop.reset();
         }
     }
 }

@@ -235,12 +235,11 @@ public final class EpisodeJournal {
     public synchronized void append(int index, JsonNode result) {
         ObjectNode entry = JsonNodeFactory.instance.objectNode().put("index", index).put("commit", commit);
         entry.set("result", result);
-        try (FileChannel out = FileChannel.open(file, StandardOpenOption.WRITE, StandardOpenOption.APPEND)) {
+        try {
             // after a line cut short by a kill, start on a line of one's own
             byte[] line = ((Files.size(file) > 0 && !endsWithNewline()) ? "\n" : "").concat(MAPPER.writeValueAsString(entry) + "\n")
                     .getBytes(StandardCharsets.UTF_8);
-            out.write(java.nio.ByteBuffer.wrap(line));
-            out.force(false);
+            Outputs.append(file, line);
             done.put(index, new Entry(result, commit));
             used.add(index);
         } catch (IOException e) {

@@ -1,12 +1,10 @@
 package handsim.learn;
 
 import handsim.report.Outputs;
-import java.io.BufferedWriter;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
@@ -148,11 +146,9 @@ public final class DemonstrationSet {
         return Integer.parseInt(row.split(",", 3)[i]);
     }
 
+    /** Appends rows, forced to disk ({@link Outputs#append}). */
     private static void write(Path to, CharSequence text) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(to, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND)) {
-            w.append(text);
-        }
+        Outputs.append(to, text.toString().getBytes(StandardCharsets.UTF_8));
     }
 
     private String header() {

@@ -1,21 +1,19 @@
 package handsim.learn;
 
 import handsim.report.Outputs;
-import java.io.BufferedWriter;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
 
 /**
- * {@code metrics.csv}: one row per training episode ({@link EpisodeStats}), flushed as it comes
+ * {@code metrics.csv}: one row per training episode ({@link EpisodeStats}), forced to disk as it comes
  * so that a killed run keeps its curve. Opening for a resumed run first drops the rows of
  * episodes played after the checkpoint (they will be played again) and a partial last row.
  */
@@ -25,10 +23,10 @@ public final class MetricsCsv implements TrainingListener, Closeable {
             + "updates,terminal,sigma,wall_seconds";
     private static final int FIELDS = 12;
 
-    private final BufferedWriter out;
+    private final Path file;
 
-    private MetricsCsv(BufferedWriter out) {
-        this.out = out;
+    private MetricsCsv(Path file) {
+        this.file = file;
     }
 
     /**
@@ -55,7 +53,7 @@ public final class MetricsCsv implements TrainingListener, Closeable {
             kept.forEach(s -> sb.append(row(s)).append('\n'));
             o.write(sb.toString().getBytes(StandardCharsets.UTF_8));
         });
-        return new MetricsCsv(Files.newBufferedWriter(file, StandardCharsets.UTF_8, StandardOpenOption.APPEND));
+        return new MetricsCsv(file);
     }
 
     /** {@link #open(Path, long, Consumer)} printing its warnings to standard error. */
@@ -63,20 +61,19 @@ public final class MetricsCsv implements TrainingListener, Closeable {
         return open(file, keepEpisodes, w -> System.err.println("warning: " + w));
     }
 
+    /** Appends the episode's row, forced to disk ({@link Outputs#append}). */
     @Override
     public void onEpisode(EpisodeStats s) {
         try {
-            out.write(row(s));
-            out.newLine();
-            out.flush();
+            Outputs.append(file, (row(s) + "\n").getBytes(StandardCharsets.UTF_8));
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write metrics", e);
+            throw new UncheckedIOException(e);
         }
     }
 
+    /** Nothing to close: each row is written and forced as it comes. */
     @Override
-    public void close() throws IOException {
-        out.close();
+    public void close() {
     }
 
     static String row(EpisodeStats s) {

@@ -60,6 +60,14 @@ public final class Policy {
         }
     }
 
+    /**
+     * The largest weight or bias a policy file may hold (in absolute value): a trained actor's
+     * stay within a few units (the shipped ones within 1.4, with observations normalised to a
+     * few units), so a larger one is a damaged or hand-edited file, whose products would swamp
+     * every other input or overflow.
+     */
+    public static final double MAX_WEIGHT = 1e4;
+
     public static final String FORMAT = "handsim-policy";
     public static final int VERSION = 1;
 
@@ -196,6 +204,16 @@ public final class Policy {
         return root;
     }
 
+    /** Requires every entry of {@code values} (read from {@code where}) within [-{@link #MAX_WEIGHT}, {@link #MAX_WEIGHT}]. */
+    private static void requireBounded(Json where, double[] values) {
+        for (int i = 0; i < values.length; i++) {
+            if (!(Math.abs(values[i]) <= MAX_WEIGHT)) {
+                throw where.error("entry " + i + " is " + Json.show(values[i]) + ": a policy's weights and biases lie within [-"
+                        + Json.show(MAX_WEIGHT) + ", " + Json.show(MAX_WEIGHT) + "] (a damaged or hand-edited file?)");
+            }
+        }
+    }
+
     public static Policy load(Path file) {
         return parse(Json.load(file));
     }
@@ -231,8 +249,10 @@ public final class Policy {
             double[][] w = new double[rows.size()][];
             for (int r = 0; r < w.length; r++) {
                 w[r] = rows.get(r).asNumbers(width);
+                requireBounded(rows.get(r), w[r]);
             }
             double[] b = lj.numbers("bias", w.length);
+            requireBounded(lj.get("bias"), b);
             lj.requireNoUnknownFields();
             try {
                 layers.add(new Layer(w, b, act));

@@ -42,6 +42,8 @@ public final class Trainer {
     private double criticLossSum; // over the updates since the last reported episode
     private double actorLossSum;
     private int lossCount;
+    /** What the checkpoint this trainer was resumed from says it belongs to (null: none said, or not resumed). */
+    private com.fasterxml.jackson.databind.JsonNode identity;
 
     private Trainer(LearnerConfig config, DdpgAgent agent, Rng episodeRng, double elapsedBefore) {
         this.config = config;
@@ -121,6 +123,8 @@ public final class Trainer {
         for (double r : s.numbers("recentRewards", -1)) {
             t.recentRewards.add(r);
         }
+        t.identity = loaded.extra().get("identity");
+        s.allow("identity");
         s.requireNoUnknownFields();
         return t;
     }
@@ -139,7 +143,18 @@ public final class Trainer {
 
     /** Saves the agent and this driver's state (atomically). Call between episodes. */
     public void checkpoint(Path file) throws IOException {
+        checkpoint(file, null);
+    }
+
+    /**
+     * {@link #checkpoint(Path)} with {@code identity} recorded in it: what run the checkpoint
+     * belongs to (its task, object, config and run), which a resume compares with its own.
+     */
+    public void checkpoint(Path file, com.fasterxml.jackson.databind.JsonNode identity) throws IOException {
         ObjectNode s = Json.mapper().createObjectNode();
+        if (identity != null) {
+            s.set("identity", identity);
+        }
         s.set("config", config.toJson());
         s.put("episodes", episodes);
         s.put("steps", steps);
@@ -152,6 +167,11 @@ public final class Trainer {
 
     public DdpgAgent agent() {
         return agent;
+    }
+
+    /** The identity the checkpoint this trainer was resumed from records ({@link #checkpoint(Path, com.fasterxml.jackson.databind.JsonNode)}), or null. */
+    public com.fasterxml.jackson.databind.JsonNode identity() {
+        return identity;
     }
 
     public LearnerConfig config() {
@@ -220,16 +240,28 @@ public final class Trainer {
         return runRound(player, listener, Integer.MAX_VALUE);
     }
 
-    /** A round of at most {@code maxEpisodes} episodes (train --session-episodes stopping before the run's budget). */
+    /**
+     * A round of at most {@code maxEpisodes} episodes (train --session-episodes stopping before
+     * the run's budget). A round whose play throws (a stop request) changes nothing: a checkpoint
+     * taken after it is the one the round would have started from.
+     */
     public List<EpisodeStats> runRound(RoundPlayer player, TrainingListener listener, int maxEpisodes) {
         int k = (int) Math.min(Math.min(config.training().parallelEpisodes(), maxEpisodes),
                 Math.max(1, config.training().episodes() - episodes));
+        long drawnFrom = episodeRng.state();
         List<EpisodePlayer.Request> requests = new ArrayList<>();
         for (int i = 0; i < k; i++) {
             requests.add(nextRequest());
         }
         Policy snapshot = agent.policy("training snapshot", "[-1, 1]^" + agent.actionSize());
-        List<EpisodePlayer.Episode> played = player.play(snapshot, requests);
+        List<EpisodePlayer.Episode> played;
+        try {
+            played = player.play(snapshot, requests);
+        } catch (RuntimeException e) {
+            // a round that did not finish (a stop request, a failure) leaves the learner as it was before it
+            episodeRng.setState(drawnFrom);
+            throw e;
+        }
         double[] q0 = new double[k];
         for (int i = 0; i < k; i++) {
             q0[i] = agent.value(played.get(i).firstObservation()); // the networks the episodes were played with

@@ -41,7 +41,9 @@ public final class ModelLoader {
         return parse(Json.load(file));
     }
 
+    /** A model checked against the project's {@code models/physiology.json} ({@link Physiology}). */
     public static HandModel parse(Json root) {
+        Physiology physiology = Physiology.load();
         String name = root.string("name");
         root.allow("description", "units", "sources", "comment");
         List<Body> bodies = new ArrayList<>();
@@ -110,6 +112,7 @@ public final class ModelLoader {
                 if (!(range[0] < range[1])) {
                     throw d.fieldError("rangeDeg", "lower limit must be below upper limit, got [" + range[0] + ", " + range[1] + "]");
                 }
+                physiology.check(d, "rangeDeg", dofName, range);
                 if (type == JointType.BALL && s == 1 && (range[0] <= -90 || range[1] >= 90)) {
                     throw d.fieldError("rangeDeg", "the middle angle of a ball joint must stay inside (-90, 90) degrees (Euler singularity), got ["
                             + range[0] + ", " + range[1] + "]");

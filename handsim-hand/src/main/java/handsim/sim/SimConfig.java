@@ -15,10 +15,41 @@ import java.nio.file.Path;
  * @param angularDampingPerSecond air resistance rate on angular velocity, 1/s
  * @param solverIterations quickStep iterations
  * @param sor quickStep successive over-relaxation factor
+ * @param stepper what steps the island of arm, hand and object: handsim's own step or ode4j's quickStep
  */
 public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, double contactStiffness, double friction,
         int maxContactsPerPair, double linearDampingPerSecond, double angularDampingPerSecond, int solverIterations,
-        double sor, Divergence divergence) {
+        double sor, Stepper stepper, Divergence divergence) {
+
+    /**
+     * The step of the constrained bodies. Both solve the same rows (joints, stops, contacts with
+     * ERP/CFM and friction) by projected SOR in ODE's order; {@code HANDSIM} is handsim's own,
+     * allocation-free implementation, {@code ODE4J} ode4j's quickStep, the reference.
+     */
+    public enum Stepper {
+        HANDSIM("handsim"), ODE4J("ode4j");
+
+        private final String label;
+
+        Stepper(String label) {
+            this.label = label;
+        }
+
+        /** Its name in configs/sim.json and on the command line. */
+        public String label() {
+            return label;
+        }
+
+        /** The stepper named {@code label}. */
+        public static Stepper of(String label) {
+            for (Stepper s : values()) {
+                if (s.label.equals(label)) {
+                    return s;
+                }
+            }
+            throw new IllegalArgumentException("stepper must be handsim or ode4j, got \"" + label + "\"");
+        }
+    }
 
     /**
      * When a step has exploded: the object faster than {@code objectSpeed} (m/s), or an arm body
@@ -74,6 +105,7 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
                 damping.number("angularPerSecond", 0, 100),
                 solver.integer("iterations", 1, 1000),
                 solver.number("sor", 0.1, 2.0),
+                Stepper.of(solver.choice("stepper", "handsim", "ode4j")),
                 Divergence.parse(j.get("divergence")));
         for (Json node : new Json[] {contact, damping, solver, j}) {
             node.requireNoUnknownFields();
@@ -107,6 +139,11 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
 
     public SimConfig withSolverIterations(int iterations) {
         return new SimConfig(timeStep, gravity, groundHeight, contactStiffness, friction, maxContactsPerPair,
-                linearDampingPerSecond, angularDampingPerSecond, iterations, sor, divergence);
+                linearDampingPerSecond, angularDampingPerSecond, iterations, sor, stepper, divergence);
+    }
+
+    public SimConfig withStepper(Stepper s) {
+        return new SimConfig(timeStep, gravity, groundHeight, contactStiffness, friction, maxContactsPerPair,
+                linearDampingPerSecond, angularDampingPerSecond, solverIterations, sor, s, divergence);
     }
 }

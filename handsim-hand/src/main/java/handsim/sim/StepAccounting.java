@@ -4,7 +4,7 @@ package handsim.sim;
  * What a simulator's {@link Simulator#step()} cost while accounting was on (see {@link
  * Simulator#setAccounting}): nanoseconds of wall time in the whole step, in collision and in the
  * solver, and the bytes the physics engine itself allocated (its solver arrays, its contact
- * joints), to tell them from the caller's. Totals since the simulator was made; take
+ * joints, its colliders), to tell them from the caller's, and of those the solver's alone. Totals since the simulator was made; take
  * differences. Mutable and owned by the simulator's thread.
  */
 public final class StepAccounting {
@@ -14,14 +14,16 @@ public final class StepAccounting {
     private long collisionNanos;
     private long solverNanos;
     private long engineBytes;
+    private long solverBytes;
 
-    /** Adds one step's figures. */
-    public void add(long step, long collision, long solver, long bytes) {
+    /** Adds one step's figures: nanoseconds in the step, collision and solver; bytes of the engine and of its solver. */
+    public void add(long step, long collision, long solver, long bytes, long solverOnlyBytes) {
         steps++;
         stepNanos += step;
         collisionNanos += collision;
         solverNanos += solver;
         engineBytes += bytes;
+        solverBytes += solverOnlyBytes;
     }
 
     public long steps() {
@@ -48,6 +50,11 @@ public final class StepAccounting {
         return engineBytes;
     }
 
+    /** Of which the solver and integrator allocated (the constrained step alone). */
+    public long solverBytes() {
+        return solverBytes;
+    }
+
     /** An independent copy, to subtract later figures from. */
     public StepAccounting copy() {
         StepAccounting c = new StepAccounting();
@@ -56,6 +63,7 @@ public final class StepAccounting {
         c.collisionNanos = collisionNanos;
         c.solverNanos = solverNanos;
         c.engineBytes = engineBytes;
+        c.solverBytes = solverBytes;
         return c;
     }
 }

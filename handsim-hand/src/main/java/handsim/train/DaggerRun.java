@@ -24,7 +24,6 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;
@@ -371,8 +370,7 @@ public final class DaggerRun {
         String row = String.format(Locale.ROOT, "%d,%d,%d,%d,%.4f,%d,%d,%.3f,%d,%.6f,%.6f,%.1f%n", s.round(), s.episodes(), s.decisions(),
                 s.proposalSuccesses(), s.proposalSuccessRate(), s.labelled(), s.tries(), (double) s.tries() / Math.max(1, s.decisions()),
                 s.examples(), s.trainLoss(), s.validationLoss(), seconds);
-        Files.writeString(file, (Files.exists(file) ? "" : ROUNDS_HEADER + "\n") + row, StandardCharsets.UTF_8,
-                StandardOpenOption.CREATE, StandardOpenOption.APPEND);
+        Outputs.append(file, ((Files.exists(file) ? "" : ROUNDS_HEADER + "\n") + row).getBytes(StandardCharsets.UTF_8));
     }
 
     /** A progress line at most every few seconds within a round: episodes done, and the learner's successes so far. */

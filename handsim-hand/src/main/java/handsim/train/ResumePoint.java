@@ -1,5 +1,7 @@
 package handsim.train;
 
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.Checkpoints;
 import handsim.learn.DdpgAgent;
@@ -31,15 +33,36 @@ final class ResumePoint {
     record Found(String what, Trainer trainer) {
     }
 
-    /** The learner saved in {@code file}: missing, {@link NoSuchFileException}; any other failure, {@link Checkpoints.Damaged}. */
-    static Trainer checkpoint(Path file, TrainConfig config) throws IOException {
+    /**
+     * The learner saved in {@code file}, which must belong to the run of {@code identity}
+     * ({@link TrainRun#identity}): missing, {@link NoSuchFileException}; another run's, an {@link
+     * IllegalArgumentException} naming the first field that differs; any other failure, {@link
+     * Checkpoints.Damaged}. A checkpoint that records no identity (written before checkpoints
+     * did) is taken with a note to {@code notes}.
+     */
+    static Trainer checkpoint(Path file, TrainConfig config, ObjectNode identity, Consumer<String> notes) throws IOException {
+        Trainer trainer;
         try {
-            return Trainer.resume(file, config.learner());
+            trainer = Trainer.resume(file, config.learner());
         } catch (NoSuchFileException | Checkpoints.Damaged e) {
             throw e;
         } catch (IOException | RuntimeException e) { // intact zip, but a trainer state that does not fit the run
             throw new Checkpoints.Damaged(file, e);
         }
+        JsonNode recorded = trainer.identity();
+        if (recorded == null) {
+            notes.accept(file + " records no run identity (an older checkpoint): its task, object and config are not checked");
+            return trainer;
+        }
+        for (String field : List.of("task", "object", "config", "run")) {
+            JsonNode was = recorded.get(field), is = identity.get(field);
+            if (was == null || !was.equals(is)) {
+                throw new IllegalArgumentException(file + " belongs to another run: its " + field + " is " + (was == null ? "missing" : was)
+                        + ", this run's is " + is + (field.equals("config") ? " (SHA-256 of config.json)" : "")
+                        + "; nothing was changed (a checkpoint copied from another run folder?)");
+            }
+        }
+        return trainer;
     }
 
     /** Whether the run in {@code dir} got as far as a checkpoint (a checkpoint writes the policy and its snapshot). */
@@ -49,9 +72,10 @@ final class ResumePoint {
     }
 
     /** The newest intact earlier checkpoint, else the newest intact policy snapshot, else null. */
-    static Found fallback(Path dir, TrainConfig config, ThrowEnvFactory envs, Consumer<String> notes) throws IOException {
+    static Found fallback(Path dir, TrainConfig config, ObjectNode identity, ThrowEnvFactory envs, Consumer<String> notes)
+            throws IOException {
         try {
-            Trainer t = checkpoint(dir.resolve(TrainRun.PREVIOUS_CHECKPOINT), config);
+            Trainer t = checkpoint(dir.resolve(TrainRun.PREVIOUS_CHECKPOINT), config, identity, notes);
             return new Found(TrainRun.PREVIOUS_CHECKPOINT + " (episode " + t.episodes() + ")", t);
         } catch (NoSuchFileException e) {
             // no earlier checkpoint: try the snapshots

@@ -14,9 +14,12 @@ import handsim.learn.EpisodePlayer;
 import handsim.learn.Trainer;
 import handsim.learn.LearnerConfig;
 import handsim.learn.TrainingListener;
+import handsim.config.ReadLog;
 import handsim.report.Outputs;
+import handsim.report.Stop;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -56,6 +59,8 @@ public final class TrainRun {
     public static final String INIT_DATASET = "init-dataset.csv";
     /** A fine-tuning run's copy of the policy its actor started as. */
     public static final String INIT_POLICY = "init-policy.json";
+    /** The field of run.json that names the run for its checkpoints (the folder's name when it started). */
+    static final String RUN_ID = "runId";
 
     private final Path dir;
     private final TrainConfig config;
@@ -64,6 +69,8 @@ public final class TrainRun {
     private final Trainer trainer;
     /** The command and commit that started the run (from run.json), written into every policy file. */
     private final ObjectNode startedBy;
+    /** The episodes of the learner's state in checkpoint.zip: a new run starts from none, a resumed one from its checkpoint's. */
+    private long checkpointed;
 
     private TrainRun(Path dir, TrainConfig config, ThrowEnvFactory envs, handsim.rollout.Rollouts<Simulator> rollouts, Trainer trainer) {
         Json started = Json.load(dir.resolve(RUN_JSON));
@@ -78,6 +85,7 @@ public final class TrainRun {
         this.envs = envs;
         this.rollouts = rollouts;
         this.trainer = trainer;
+        this.checkpointed = trainer.episodes();
     }
 
     /**
@@ -106,12 +114,13 @@ public final class TrainRun {
         Policy policy = isPolicy ? initPolicy(initActor, config, envs) : null;
         Files.createDirectories(dir);
         Outputs.writeJson(dir.resolve(CONFIG), config.toJson());
-        Outputs.writeJson(dir.resolve(RUN_JSON), provenance);
+        ObjectNode runJson = provenance.deepCopy();
+        runJson.put(RUN_ID, dir.getFileName().toString()); // its checkpoints name it: a resume takes no other run's
+        Outputs.writeJson(dir.resolve(RUN_JSON), runJson);
         if (isPolicy) {
-            Files.copy(initActor, dir.resolve(INIT_POLICY));
+            Outputs.copy(initActor, dir.resolve(INIT_POLICY));
         } else if (initActor != null) {
-            Files.copy(Files.isDirectory(initActor) ? initActor.resolve(Warmstart.DATASET) : initActor,
-                    dir.resolve(INIT_DATASET));
+            Outputs.copy(Files.isDirectory(initActor) ? initActor.resolve(Warmstart.DATASET) : initActor, dir.resolve(INIT_DATASET));
         }
         return new TrainRun(dir, config, envs, rollouts, freshTrainer(config, envs, data, policy));
     }
@@ -211,8 +220,9 @@ public final class TrainRun {
             Consumer<String> notes) throws IOException {
         TrainConfig config = savedConfig(dir);
         String problem;
+        ObjectNode identity = identity(dir, config);
         try {
-            Trainer trainer = ResumePoint.checkpoint(dir.resolve(CHECKPOINT), config);
+            Trainer trainer = ResumePoint.checkpoint(dir.resolve(CHECKPOINT), config, identity, notes);
             sweepTemporaryFiles(dir);
             return new TrainRun(dir, config, envs, rollouts, trainer);
         } catch (NoSuchFileException e) {
@@ -229,7 +239,7 @@ public final class TrainRun {
             throw new IllegalArgumentException(dir + ": " + problem + ", so the run cannot go on where it stopped (nothing "
                     + "was changed); add --from-snapshot to go on from its newest intact earlier checkpoint or policy snapshot");
         }
-        ResumePoint.Found fallback = ResumePoint.fallback(dir, config, envs, notes);
+        ResumePoint.Found fallback = ResumePoint.fallback(dir, config, identity, envs, notes);
         if (fallback == null) {
             throw new IllegalArgumentException(dir + ": " + problem + " and the run has no intact earlier checkpoint ("
                     + PREVIOUS_CHECKPOINT + ") or policy snapshot (" + SNAPSHOTS + "/episode-N.json) to go on from");
@@ -245,6 +255,26 @@ public final class TrainRun {
         runJson.withArray("fallbacks").add(record);
         Outputs.writeJson(dir.resolve(RUN_JSON), runJson);
         return new TrainRun(dir, config, envs, rollouts, fallback.trainer());
+    }
+
+    /**
+     * What a checkpoint of the run in {@code dir} must say it belongs to: the task, the object,
+     * the SHA-256 of the config (without its episode budget, which a resume with --episodes
+     * raises) and the run's id (run.json's, the folder's name when the run started).
+     */
+    static ObjectNode identity(Path dir, TrainConfig config) {
+        ObjectNode id = Json.mapper().createObjectNode();
+        id.put("task", config.run().task());
+        id.put("object", config.run().object());
+        ObjectNode withoutBudget = config.toJson();
+        if (withoutBudget.get("training") instanceof ObjectNode training) {
+            training.remove("episodes");
+        }
+        id.put("config", ReadLog.sha256(Json.pretty(withoutBudget).getBytes(StandardCharsets.UTF_8)));
+        Path runJson = dir.resolve(RUN_JSON);
+        Json started = Files.isRegularFile(runJson) ? Json.load(runJson) : null;
+        id.put("run", started != null && started.has(RUN_ID) ? started.string(RUN_ID) : dir.getFileName().toString());
+        return id;
     }
 
     /** The learner of a run's first episode: as {@link #start} made it, from the dataset or policy copied into the run. */
@@ -298,7 +328,7 @@ public final class TrainRun {
                 config.run().name(), config.run().task(), config.run().object(), dir, trainer.episodes() + 1, budget,
                 config.learner().training().episodes(),
                 config.learner().training().parallelEpisodes(), rollouts.workers());
-        try (MetricsCsv csv = MetricsCsv.open(dir.resolve(METRICS), trainer.episodes())) {
+        try (Stop.Watch watch = Stop.watch(); MetricsCsv csv = MetricsCsv.open(dir.resolve(METRICS), trainer.episodes())) {
             TrainingListener listener = new TrainingListener() {
                 @Override
                 public void onEpisode(EpisodeStats s) {
@@ -309,7 +339,12 @@ public final class TrainRun {
             boolean saved = false;
             while (trainer.episodes() < budget) {
                 long before = trainer.episodes();
-                trainer.runRound(this::play, listener, (int) (budget - trainer.episodes()));
+                try {
+                    Stop.check("");
+                    trainer.runRound(this::play, listener, (int) (budget - trainer.episodes()));
+                } catch (Stop.Stopped stopped) {
+                    throw stopped(stopped);
+                }
                 saved = every > 0 && trainer.episodes() / every != before / every;
                 if (saved) {
                     saveCheckpoint();
@@ -321,6 +356,20 @@ public final class TrainRun {
         }
         progress.finish();
         out.println("wrote " + dir.resolve(POLICY) + ", " + CHECKPOINT + ", " + METRICS + ", learning.png, losses.png");
+    }
+
+    /**
+     * A stop request seen between rounds or during one (whose episodes are then dropped: they are
+     * played again, the same, on resume): the learner as the last finished round left it is
+     * checkpointed, unless its checkpoint is there already (or it played no episode yet).
+     */
+    private Stop.Stopped stopped(Stop.Stopped request) throws IOException {
+        if (trainer.episodes() != checkpointed) {
+            saveCheckpoint();
+        }
+        return new Stop.Stopped(request.signal(), trainer.episodes() > 0 ? "a checkpoint at episode " + trainer.episodes() + " is in "
+                + dir + " (train --resume " + dir + " goes on from it)" : "no episode was finished; train --resume " + dir
+                + " starts the run again");
     }
 
     /** A round's episodes on the rollout workers, each playing on an environment over its own simulator. */
@@ -337,7 +386,8 @@ public final class TrainRun {
         if (Files.exists(checkpoint)) {
             Outputs.keepCopy(checkpoint, dir.resolve(PREVIOUS_CHECKPOINT));
         }
-        trainer.checkpoint(checkpoint);
+        trainer.checkpoint(checkpoint, identity(dir, config));
+        checkpointed = trainer.episodes();
         ObjectNode provenance = Json.mapper().createObjectNode();
         provenance.put("run", dir.getFileName().toString());
         provenance.put("episodes", trainer.episodes());

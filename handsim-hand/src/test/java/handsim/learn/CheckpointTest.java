@@ -80,7 +80,8 @@ class CheckpointTest {
             out.write(new byte[1000]);
             throw new IOException("killed while writing");
         }));
-        assertEquals("killed while writing", e.getMessage());
+        // the failure names the file it was writing and keeps the reason
+        assertEquals(file + ": cannot write it: killed while writing", e.getMessage());
         assertEquals("previous checkpoint", Files.readString(file));
         try (Stream<Path> files = Files.list(dir)) {
             assertEquals(List.of(file), files.toList(), "no temporary file left behind");

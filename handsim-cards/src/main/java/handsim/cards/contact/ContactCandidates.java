@@ -21,6 +21,9 @@ final class ContactCandidates {
     int eeCount;
     int[] eePairs = new int[512];
 
+    /** The most candidate pairs one query may find: a memory budget (8 bytes each, and their contacts' more). */
+    private long maxPairs = Integer.MAX_VALUE / 2 - 8;
+
     // workspace
     private double[] vertexBoxes = new double[0];
     private double[] edgeBoxes = new double[0];
@@ -30,6 +33,22 @@ final class ContactCandidates {
         this.mesh = mesh;
         this.vertexHash = new SpatialHash(cellSize);
         this.edgeHash = new SpatialHash(cellSize);
+    }
+
+    /** Sets the memory budgets: (cell, id) entries per spatial hash and candidate pairs per query ({@link BudgetExceeded} past them). */
+    void limit(long hashEntries, long pairs) {
+        vertexHash.limit(hashEntries);
+        edgeHash.limit(hashEntries);
+        maxPairs = Math.min(pairs, Integer.MAX_VALUE / 2 - 8);
+    }
+
+    /** Makes room for one more pair in {@code pairs} (two ints each), within the budget. */
+    private int[] roomForPair(int[] pairs, int count) {
+        if ((long) ptCount + eeCount >= maxPairs) {
+            throw new BudgetExceeded("more than " + maxPairs + " candidate contact pairs (configs/cards/budget.json maxContactPairs): "
+                    + "the bodies crowd together, or sweep through each other, far past a card scene's contacts");
+        }
+        return 2 * count + 2 > pairs.length ? Arrays.copyOf(pairs, 2 * pairs.length) : pairs;
     }
 
     /**
@@ -54,6 +73,7 @@ final class ContactCandidates {
         vertexHash.build(vertexBoxes, nv);
         edgeHash.build(edgeBoxes, ne);
         ptCount = 0;
+        eeCount = 0;
         double[] fb = new double[6];
         int nf = mesh.faces.length / 3;
         for (int f = 0; f < nf; f++) {
@@ -67,9 +87,7 @@ final class ContactCandidates {
                 if (p == f0 || p == f1 || p == f2 || !mesh.bodiesMayTouch(p, f0) || !overlaps(vertexBoxes, v, fb)) {
                     return;
                 }
-                if (2 * ptCount + 2 > ptPairs.length) {
-                    ptPairs = Arrays.copyOf(ptPairs, 2 * ptPairs.length);
-                }
+                ptPairs = roomForPair(ptPairs, ptCount);
                 ptPairs[2 * ptCount] = face;
                 ptPairs[2 * ptCount + 1] = p;
                 ptCount++;
@@ -94,9 +112,7 @@ final class ContactCandidates {
                     if (!boxesOverlap(edgeBoxes, edge, edgeBoxes, other, radius)) {
                         return;
                     }
-                    if (2 * eeCount + 2 > eePairs.length) {
-                        eePairs = Arrays.copyOf(eePairs, 2 * eePairs.length);
-                    }
+                    eePairs = roomForPair(eePairs, eeCount);
                     eePairs[2 * eeCount] = edge;
                     eePairs[2 * eeCount + 1] = other;
                     eeCount++;

@@ -79,6 +79,14 @@ public final class ContactSet {
         this.candidates = new ContactCandidates(mesh, cellSize);
     }
 
+    /**
+     * Sets the memory budgets of the broad phase: (cell, id) entries per spatial hash and
+     * candidate pairs per query; past them a build throws {@link BudgetExceeded}.
+     */
+    public void limit(long hashEntries, long candidatePairs) {
+        candidates.limit(hashEntries, candidatePairs);
+    }
+
     public int size() {
         return count;
     }

@@ -14,6 +14,8 @@ final class SpatialHash {
     private static final int ID_BITS = 64 - 1 - 3 * BITS;
 
     private final double cell;
+    /** The most (cell, id) entries one build may make: a memory budget (8 bytes each, and the cell table's 32). */
+    private long maxEntries = Long.MAX_VALUE;
     private long[] entries = new long[0];
     private int size;
     private double ox;
@@ -32,6 +34,11 @@ final class SpatialHash {
         this.cell = cellSize;
     }
 
+    /** Sets the most (cell, id) entries a build may make; a build past it throws {@link BudgetExceeded}. */
+    void limit(long entries) {
+        this.maxEntries = entries;
+    }
+
     /** Enters {@code count} boxes (6 numbers each: min xyz, max xyz). */
     void build(double[] boxes, int count) {
         if (count >= (1 << ID_BITS)) {
@@ -44,6 +51,17 @@ final class SpatialHash {
             ox = Math.min(ox, boxes[6 * i]);
             oy = Math.min(oy, boxes[6 * i + 1]);
             oz = Math.min(oz, boxes[6 * i + 2]);
+        }
+        long needed = 0;
+        for (int i = 0; i < count; i++) {
+            // counted before anything is allocated: a box swept far (a bone moved absurdly fast) spans billions of cells
+            needed += (long) (cellOf(boxes[6 * i + 3], ox) - cellOf(boxes[6 * i], ox) + 1)
+                    * (cellOf(boxes[6 * i + 4], oy) - cellOf(boxes[6 * i + 1], oy) + 1)
+                    * (cellOf(boxes[6 * i + 5], oz) - cellOf(boxes[6 * i + 2], oz) + 1);
+            if (needed > maxEntries || needed > Integer.MAX_VALUE - 8) {
+                throw new BudgetExceeded("the spatial hash needs more than " + Math.min(maxEntries, Integer.MAX_VALUE - 8L)
+                        + " cell entries (configs/cards/budget.json maxHashEntries): the bodies' boxes span too much space");
+            }
         }
         size = 0;
         for (int i = 0; i < count; i++) {

@@ -33,13 +33,29 @@ public final class CardsConfig {
                 new FrictionTable(f.number("cardCard", 0, 5), f.number("skin", 0, 5), f.number("ground", 0, 5)),
                 j.number("frictionEpsV", 1e-8, 1.0),
                 j.number("kappaScale", 1e-3, 1e20),
-                j.numbers("gravity", 3),
+                gravity(j),
                 j.number("hashCell", 1e-5, 1.0),
                 SparseSpdSystem.Factorisation.valueOf(j.choice("factorisation", "supernodal", "qdldl").toUpperCase(java.util.Locale.ROOT)),
                 j.bool("parallel", false));
         f.requireNoUnknownFields();
         j.requireNoUnknownFields();
         return s;
+    }
+
+    /**
+     * The most gravity a card scene takes (m/s²): ten times the Earth's. Beyond it the pinch that
+     * holds a card against its weight would crush the fingertips' soft layers.
+     */
+    static final double MAX_GRAVITY = 100;
+
+    private static double[] gravity(Json j) {
+        double[] g = j.numbers("gravity", 3);
+        double magnitude = Math.sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (!(magnitude <= MAX_GRAVITY)) {
+            throw j.fieldError("gravity", "its magnitude must be at most " + Json.show(MAX_GRAVITY) + " m/s² (ten times the Earth's), got "
+                    + Json.show(magnitude));
+        }
+        return g;
     }
 
     /** The card material named by {@code preset} (or the file's default "card" when null) and the fingertip's. */

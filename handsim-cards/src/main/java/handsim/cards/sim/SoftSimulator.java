@@ -1,6 +1,7 @@
 package handsim.cards.sim;
 
 import handsim.cards.contact.Barrier;
+import handsim.cards.contact.BudgetExceeded;
 import handsim.cards.contact.ContactSet;
 import handsim.cards.contact.Friction;
 import handsim.cards.linalg.SparseSpdSystem;
@@ -41,6 +42,10 @@ public final class SoftSimulator {
     private java.util.function.DoubleUnaryOperator gravityScale = t -> 1;
     private long[] couplingKeys = new long[64];
     private int couplingCount;
+    /** Budget of this simulation: Newton iterations in all, and the wall-time deadline (System.nanoTime). */
+    private long maxNewtonIterations = Long.MAX_VALUE;
+    private double maxWallSeconds = Double.POSITIVE_INFINITY;
+    private long wallStart;
 
     public SoftSimulator(SoftWorld world, SolverSettings settings, BoneMotion bones) {
         this.world = world;
@@ -66,6 +71,32 @@ public final class SoftSimulator {
     public SoftSimulator withGravityScale(java.util.function.DoubleUnaryOperator scale) {
         this.gravityScale = scale;
         return this;
+    }
+
+    /**
+     * Limits this simulation, of {@code simulatedSeconds} in all, to {@code budget}: past its
+     * memory for contacts, its Newton iterations or its wall time (counted from now) a step
+     * throws {@link BudgetExceeded}.
+     */
+    public SoftSimulator withBudget(TrialBudget budget, double simulatedSeconds) {
+        contacts.limit(budget.maxHashEntries(), budget.maxContactPairs());
+        this.maxNewtonIterations = budget.newtonIterationsFor(simulatedSeconds);
+        this.maxWallSeconds = budget.maxWallSeconds();
+        this.wallStart = System.nanoTime();
+        return this;
+    }
+
+    /** Throws {@link BudgetExceeded} when this simulation has used up its Newton iterations or its wall time. */
+    private void checkBudget(SimState state, StepStats st) {
+        if (total.newtonIterations + st.newtonIterations > maxNewtonIterations) {
+            throw new BudgetExceeded("more than " + maxNewtonIterations + " Newton iterations by step " + (state.steps + 1)
+                    + " (configs/cards/budget.json maxNewtonIterationsPerSecond): the solver struggles with this trial");
+        }
+        double wall = (System.nanoTime() - wallStart) * 1e-9;
+        if (wall > maxWallSeconds) {
+            throw new BudgetExceeded(String.format(java.util.Locale.ROOT, "%.0f s of wall time by step %d (configs/cards/budget.json "
+                    + "maxWallSeconds %s)", wall, state.steps + 1, handsim.config.Json.show(maxWallSeconds)));
+        }
     }
 
     /** Totals over every step this simulator took. */
@@ -111,6 +142,7 @@ public final class SoftSimulator {
         system.forgetFactorisation();
         for (int it = 0; it < settings.maxNewtonIterations(); it++) {
             st.newtonIterations++;
+            checkBudget(state, st);
             long a0 = System.nanoTime();
             assemble(it == 0);
             long a1 = System.nanoTime();

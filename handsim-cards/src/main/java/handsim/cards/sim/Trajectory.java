@@ -4,10 +4,9 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import handsim.report.Outputs;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.TreeSet;
@@ -70,7 +69,7 @@ public final class Trajectory {
         return List.copyOf(frames);
     }
 
-    /** Writes the JSON file atomically (a temporary file moved into place). */
+    /** Writes the JSON file atomically ({@link Outputs}). */
     public void write(Path file) throws IOException {
         ObjectNode root = Json.mapper().createObjectNode();
         ArrayNode ss = root.putArray("surfaces");
@@ -99,9 +98,7 @@ public final class Trajectory {
                 }
             }
         }
-        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-        Json.mapper().writeValue(tmp.toFile(), root);
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.write(file, out -> Json.mapper().writeValue(out, root));
     }
 
     /** Reads a file written by {@link #write}. */

@@ -10,6 +10,16 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
                          double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
                          int frameEvery, SnapParams defaults) {
 
+    /*
+     * Physical and practical ranges beyond those the fields state: a fingertip's semi-axes from
+     * 1 mm (a needle, not a finger) to 5 cm (larger than any finger; the thesis' are 6-12 mm);
+     * at most 41 grid points an axis (41^3 = 68,921 nodes a fingertip, 20 times the thesis'
+     * 17 x 11 x 9) and 200 cells a card side (0.44 mm cells on a playing card, against the
+     * thesis' 11 x 6): finer meshes exhaust memory long before they change the snap.
+     */
+    static final double MIN_SEMI_AXIS = 1e-3, MAX_SEMI_AXIS = 0.05;
+    static final int MAX_GRID = 41, MAX_CELLS = 200;
+
     public static SnapConfig load(Path file) {
         return parse(Json.load(file), null);
     }
@@ -38,8 +48,8 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
         for (String name : meshes.fieldNames()) {
             int[] g = ints(meshes, name, 3);
             for (int v : g) {
-                if (v < 3 || v % 2 == 0) {
-                    throw meshes.fieldError(name, "grid counts must be odd and >= 3, got " + java.util.Arrays.toString(g));
+                if (v < 3 || v > MAX_GRID || v % 2 == 0) {
+                    throw meshes.fieldError(name, "grid counts must be odd and in [3, " + MAX_GRID + "], got " + java.util.Arrays.toString(g));
                 }
             }
             if (name.equals(chosen)) {
@@ -63,12 +73,17 @@ public record SnapConfig(double cardLength, double cardWidth, int cellsLong, int
                 trial.integer("frameEvery", 1, 10_000),
                 defaults);
         for (double a : c.semiAxes) {
-            if (!(a > 0)) {
-                throw tip.fieldError("semiAxes", "must be positive, got " + java.util.Arrays.toString(c.semiAxes));
+            if (!(a >= MIN_SEMI_AXIS && a <= MAX_SEMI_AXIS)) {
+                throw tip.fieldError("semiAxes", "each must be in [" + Json.show(MIN_SEMI_AXIS) + ", " + Json.show(MAX_SEMI_AXIS)
+                        + "] m, got " + java.util.Arrays.toString(c.semiAxes));
             }
         }
-        if (cells[0] < 2 || cells[1] < 2) {
-            throw card.fieldError("cells", "need at least 2 x 2, got " + java.util.Arrays.toString(cells));
+        if (cells[0] < 2 || cells[1] < 2 || cells[0] > MAX_CELLS || cells[1] > MAX_CELLS) {
+            throw card.fieldError("cells", "need 2 to " + MAX_CELLS + " a side, got " + java.util.Arrays.toString(cells));
+        }
+        if (c.pinchBelowTop > c.cardLength) {
+            throw tip.fieldError("pinchBelowTop", "must be within the card's length " + Json.show(c.cardLength) + " m, got "
+                    + Json.show(c.pinchBelowTop));
         }
         for (Json node : new Json[] {card, tip, hold, trial, j}) {
             node.requireNoUnknownFields();

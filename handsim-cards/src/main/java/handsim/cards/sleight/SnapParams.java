@@ -8,6 +8,13 @@ import handsim.config.Json;
  */
 public record SnapParams(double t0, double t1, double vp, double t2, double t3, double vs) {
 
+    /**
+     * The fastest mean bone speed of a trial (m/s): a fingertip flicked as fast as a hand can
+     * moves at about 2 m/s, and even that crosses the card's width (63.5 mm) in 0.03 s, three
+     * time steps; the searched pinches and slides stay below 0.012 m/s.
+     */
+    public static final double MAX_SPEED = 2;
+
     /** Reads {@code {"t0": …, "t1": …, "vp": …, "t2": …, "t3": …, "vs": …}} (a "comment" is allowed). */
     public static SnapParams parse(Json j) {
         j.allow("comment");
@@ -18,8 +25,8 @@ public record SnapParams(double t0, double t1, double vp, double t2, double t3, 
     }
 
     /**
-     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ duration and non-negative speeds; the message names the
-     * offending field and value.
+     * Requires 0 ≤ t0 < t1 ≤ t2 < t3 ≤ duration and speeds in [0, {@link #MAX_SPEED}]; the
+     * message names the offending field and value.
      */
     public void validate(double duration, String source) {
         String where = source == null ? "" : source + ": ";
@@ -28,8 +35,8 @@ public record SnapParams(double t0, double t1, double vp, double t2, double t3, 
         check(t2 >= t1, where + "t2 must be >= t1 = " + t1 + ", got " + t2);
         check(t3 > t2, where + "t3 must be > t2 = " + t2 + ", got " + t3);
         check(t3 <= duration, where + "t3 must be <= the trial duration " + duration + ", got " + t3);
-        check(vp >= 0 && Double.isFinite(vp), where + "vp must be a finite speed >= 0, got " + vp);
-        check(vs >= 0 && Double.isFinite(vs), where + "vs must be a finite speed >= 0, got " + vs);
+        check(vp >= 0 && vp <= MAX_SPEED, where + "vp must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vp));
+        check(vs >= 0 && vs <= MAX_SPEED, where + "vs must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vs));
     }
 
     private static void check(boolean ok, String message) {

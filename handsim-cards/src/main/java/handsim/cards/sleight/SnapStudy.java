@@ -1,5 +1,6 @@
 package handsim.cards.sleight;
 
+import handsim.cards.contact.BudgetExceeded;
 import handsim.cards.study.Evaluation;
 import handsim.cards.study.Objective;
 import handsim.cards.study.StudyConfig;
@@ -28,7 +29,8 @@ public final class SnapStudy {
     /**
      * Requires a search space every point of which is a valid trial: one objective, the six
      * parameters (float, linear), windows that cannot overlap (t1's low ≥ t0's high, t2's low ≥
-     * t1's high, t3's low ≥ t2's high), t3's high within the trial's {@code duration}, speeds ≥ 0.
+     * t1's high, t3's low ≥ t2's high), t3's high within the trial's {@code duration}, speeds in
+     * [0, {@link SnapParams#MAX_SPEED}].
      * The error names {@code source}, the field and the values.
      */
     public static void check(StudyConfig c, double duration, String source) {
@@ -58,6 +60,10 @@ public final class SnapStudy {
             if (p.get(speed).low() < 0) {
                 throw new ConfigException(source + ": params: " + speed + "'s low must be >= 0, got " + p.get(speed).low());
             }
+            if (p.get(speed).high() > SnapParams.MAX_SPEED) {
+                throw new ConfigException(source + ": params: " + speed + "'s high must be <= " + SnapParams.MAX_SPEED
+                        + " m/s (a flick of the finger), got " + p.get(speed).high());
+            }
         }
     }
 
@@ -73,9 +79,15 @@ public final class SnapStudy {
         return new SnapParams(p.get("t0"), p.get("t1"), p.get("vp"), p.get("t2"), p.get("t3"), p.get("vs"));
     }
 
-    /** The objective a study calls from its workers: one trial of {@code trial} per suggestion. */
+    /** The objective a study calls from its workers: one trial of {@code trial} per suggestion; a trial past its budget fails, saying which. */
     public static Objective objective(SnapTrial trial) {
-        return p -> evaluation(trial.run(params(p)));
+        return p -> {
+            try {
+                return evaluation(trial.run(params(p)));
+            } catch (BudgetExceeded e) {
+                throw new Objective.TrialFailed("past its budget: " + e.getMessage(), e);
+            }
+        };
     }
 
     /** A trial's objective value and the figures kept with it. */

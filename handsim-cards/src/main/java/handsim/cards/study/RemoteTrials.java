@@ -1,12 +1,14 @@
 package handsim.cards.study;
 
 import handsim.config.Json;
+import handsim.report.Stop;
 import handsim.rollout.PortableCall;
 import handsim.rollout.RemoteCalls;
 import handsim.rollout.RemoteFailure;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 
 /**
  * A study's trials on a cluster's executors ({@link RemoteCalls}): each trial travels as its
@@ -57,7 +59,12 @@ public final class RemoteTrials implements TrialExecutor {
 
     @Override
     public TrialRecord next() throws InterruptedException {
-        CompletableFuture<String> f = finished.take();
+        CompletableFuture<String> f;
+        while ((f = finished.poll(Study.STOP_POLL_MILLIS, TimeUnit.MILLISECONDS)) == null) {
+            if (Stop.requested()) {
+                return null;
+            }
+        }
         try {
             return TrialRecord.fromJson(Json.parse("a trial's record from the cluster", f.get()), studyConfig);
         } catch (ExecutionException e) {

@@ -9,14 +9,13 @@ import handsim.cards.tpe.Pareto;
 import handsim.cards.tpe.TpeSampler;
 import handsim.config.ConfigException;
 import handsim.config.Json;
-import java.io.FileOutputStream;
+import handsim.report.Locks;
+import handsim.report.Outputs;
+import handsim.report.Stop;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Iterator;
@@ -66,6 +65,8 @@ public final class Study {
     public static final String BEST_FILE = "best.json";
     private static final Pattern TRIAL_FILE = Pattern.compile("trial-(\\d+)\\.json");
     private static final String FORMAT = "handsim cards study 1";
+    /** How often a study waiting for a trial looks for a stop request (ms); every {@link TrialExecutor} waits so. */
+    static final long STOP_POLL_MILLIS = 100;
 
     private final Path dir;
     private final StudyConfig config;
@@ -74,6 +75,8 @@ public final class Study {
     private final ObjectNode studyJson;
     /** Finished trials (complete or failed) by number. */
     private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
+    /** Whether study.json records this run already ({@link #recordRun}). */
+    private boolean runRecorded;
 
     private Study(Path dir, StudyConfig config, long seed, ObjectNode studyJson) {
         this.dir = dir;
@@ -84,9 +87,10 @@ public final class Study {
     }
 
     /**
-     * Opens the study in {@code dir} to run it: creates it when the folder has no study.json,
-     * resumes it otherwise, which requires the same config and seed (else a
-     * {@link ConfigException} naming the field). {@code provenance} (command line, commit, ...)
+     * Opens the study in {@code dir} to run it, holding the folder for this process alone
+     * ({@link Locks}: a second process is refused at once): creates it when the folder has no
+     * study.json, resumes it otherwise, which requires the same config and seed (else a
+     * {@link ConfigException} naming the field), and trial files inside the search space. {@code provenance} (command line, commit, ...)
      * is recorded in study.json for this run.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode provenance) throws IOException {
@@ -100,6 +104,8 @@ public final class Study {
      * ones this objective gives otherwise.
      */
     public static Study openOrCreate(Path dir, StudyConfig config, long seed, ObjectNode objective, ObjectNode provenance) throws IOException {
+        Files.createDirectories(dir);
+        Locks.holdFolder(dir, "the study folder " + dir, note -> System.out.println("handsim: " + note));
         Path file = dir.resolve(STUDY_FILE);
         Study study;
         if (Files.exists(file)) {
@@ -130,8 +136,15 @@ public final class Study {
         ObjectNode run = ((ArrayNode) study.studyJson.get("runs")).addObject();
         run.put("finishedBefore", study.finished.size());
         run.set("provenance", provenance.deepCopy());
-        writeJson(file, study.studyJson);
-        return study;
+        return study; // study.json is written when the study runs: a command that fails before (its hold) leaves nothing
+    }
+
+    /** Writes study.json with this run recorded, once, as the study starts its trials. */
+    private void recordRun() throws IOException {
+        if (!runRecorded) {
+            writeJson(dir.resolve(STUDY_FILE), studyJson);
+            runRecorded = true;
+        }
     }
 
     /** Reads an existing study (its config, seed and finished trials) without running it. */
@@ -231,13 +244,15 @@ public final class Study {
         if (nTrials < 1) {
             throw new IllegalArgumentException("trials: must be >= 1, got " + nTrials);
         }
+        recordRun();
         Progress log = new Progress(progress, this, nTrials);
         log.start(executor.describe());
         TreeSet<Integer> running = new TreeSet<>();
-        try {
+        try (Stop.Watch watch = Stop.watch()) {
             TrialRecord last = null;
             while (true) {
-                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots(); k = nextToStart(nTrials, running)) {
+                for (int k = nextToStart(nTrials, running); k >= 0 && running.size() < executor.slots() && !Stop.requested();
+                        k = nextToStart(nTrials, running)) {
                     running.add(k);
                     executor.start(k, suggest(k));
                 }
@@ -248,6 +263,9 @@ public final class Study {
                     break;
                 }
                 last = executor.next();
+                if (last == null) {
+                    break; // a stop was requested: the trials under way are abandoned (they run again on resume)
+                }
                 running.remove(last.number());
                 finished.put(last.number(), last);
                 writeJson(trialFile(last.number()), last.toJson(config));
@@ -256,6 +274,7 @@ public final class Study {
         } finally {
             writeReport();
         }
+        Stop.check(finished.size() + " trials finished, kept in " + dir + " (the same command goes on from them)");
         log.end();
     }
 
@@ -307,8 +326,15 @@ public final class Study {
         Evaluation e;
         try {
             e = objective.evaluate(TrialParams.of(number, config, x));
+        } catch (Stop.Stopped stopped) {
+            throw stopped;
         } catch (Exception ex) {
-            return TrialRecord.failed(number, x, ex.toString(), (System.nanoTime() - t0) * 1e-9);
+            // a trial past its budget says why in its message; anything else is named by its class too
+            String why = ex instanceof Objective.TrialFailed ? ex.getMessage() : ex.toString();
+            return TrialRecord.failed(number, x, why, (System.nanoTime() - t0) * 1e-9);
+        } catch (OutOfMemoryError oom) {
+            // what the trial allocated is garbage once its stack is gone: the study goes on without it
+            return TrialRecord.failed(number, x, "out of memory (" + oom.getMessage() + ")", (System.nanoTime() - t0) * 1e-9);
         }
         double seconds = (System.nanoTime() - t0) * 1e-9;
         double[] values = e.values();
@@ -349,18 +375,9 @@ public final class Study {
         writeJson(dir.resolve(BEST_FILE), root);
     }
 
-    /**
-     * Writes a JSON file atomically (a temporary file moved into place) with plain streams, which,
-     * unlike NIO channels, an interrupt of the writing thread does not break off.
-     */
+    /** Writes a JSON file atomically ({@link Outputs}), as it was always written (pretty, a line break at the end). */
     private static void writeJson(Path file, JsonNode node) throws IOException {
-        Path abs = file.toAbsolutePath();
-        Files.createDirectories(abs.getParent());
-        Path tmp = abs.resolveSibling(abs.getFileName() + ".tmp");
-        try (OutputStream out = new FileOutputStream(tmp.toFile())) {
-            out.write((Json.pretty(node) + "\n").getBytes(StandardCharsets.UTF_8));
-        }
-        Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Outputs.writeString(file, Json.pretty(node) + "\n");
     }
 
     /** The first place where two JSON trees differ, as "path: a vs b"; null if equal. */
@@ -392,6 +409,8 @@ public final class Study {
             }
             return null;
         }
-        return a.equals(b) ? null : path + ": " + a + " in the study, " + b + " given";
+        // a number is its value: 4000000 read back from study.json (an int) is the long it was written from
+        boolean same = a.isNumber() && b.isNumber() ? a.decimalValue().compareTo(b.decimalValue()) == 0 : a.equals(b);
+        return same ? null : path + ": " + a + " in the study, " + b + " given";
     }
 }

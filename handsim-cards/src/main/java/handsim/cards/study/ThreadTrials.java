@@ -1,10 +1,13 @@
 package handsim.cards.study;
 
+import handsim.report.Stop;
 import java.util.concurrent.CompletionService;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorCompletionService;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 
 /** A study's trials on threads of this JVM, each calling the objective directly. */
 final class ThreadTrials implements TrialExecutor {
@@ -44,8 +47,14 @@ final class ThreadTrials implements TrialExecutor {
 
     @Override
     public TrialRecord next() throws InterruptedException {
+        Future<TrialRecord> next;
+        while ((next = done.poll(Study.STOP_POLL_MILLIS, TimeUnit.MILLISECONDS)) == null) {
+            if (Stop.requested()) {
+                return null;
+            }
+        }
         try {
-            return done.take().get();
+            return next.get();
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
             if (cause instanceof RuntimeException r) {

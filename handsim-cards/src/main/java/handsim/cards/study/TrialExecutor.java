@@ -17,7 +17,10 @@ public interface TrialExecutor extends AutoCloseable {
     /** Starts trial {@code number} at {@code params} (the search space's order). */
     void start(int number, double[] params);
 
-    /** Waits for a started trial to finish and returns its record: the next to finish, whichever it is. */
+    /**
+     * Waits for a started trial to finish and returns its record: the next to finish, whichever it
+     * is; or null once a stop is requested ({@code handsim.report.Stop}) while it waits.
+     */
     TrialRecord next() throws InterruptedException;
 
     /** Abandons the trials still running (a resumed study runs them again). */

@@ -92,7 +92,14 @@ public record TrialRecord(int number, double[] params, double[] values, Map<Stri
         List<Param> space = config.params();
         double[] params = new double[space.size()];
         for (int i = 0; i < params.length; i++) {
-            params[i] = ps.number(space.get(i).name());
+            Param p = space.get(i);
+            params[i] = ps.number(p.name());
+            // a trial file edited by hand, or one of another study, must not steer the sampler or become the best
+            if (params[i] < p.low() || params[i] > p.high() || p.integer() && params[i] != Math.rint(params[i])) {
+                throw ps.fieldError(p.name(), Json.show(params[i]) + " is outside the study's search space [" + Json.show(p.low())
+                        + ", " + Json.show(p.high()) + "]" + (p.integer() ? " of whole numbers" : "")
+                        + " (a trial file edited by hand, or one of another study?)");
+            }
         }
         ps.requireNoUnknownFields();
         double[] values = new double[0];
@@ -112,7 +119,7 @@ public record TrialRecord(int number, double[] params, double[] values, Map<Stri
         for (String name : in.fieldNames()) {
             info.put(name, in.number(name));
         }
-        double seconds = j.number("seconds");
+        double seconds = j.number("seconds", 0, Double.MAX_VALUE);
         j.requireNoUnknownFields();
         return new TrialRecord(number, params, values, info, error, seconds);
     }

@@ -4,7 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import handsim.cards.contact.BudgetExceeded;
 import handsim.cards.sim.CardsConfig;
+import handsim.cards.sim.TrialBudget;
 import handsim.config.Json;
 import java.nio.file.Path;
 import java.util.Map;
@@ -64,5 +66,26 @@ class SnapTrialTest {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> trial.run(new SnapParams(0.1, 0.05, 0.001, 0.05, 0.2, 0.04)));
         assertTrue(e.getMessage().startsWith("t1 must be > t0"), e.getMessage());
+    }
+
+    @Test
+    void aTrialPastItsNewtonOrMemoryBudgetIsStoppedSayingWhich() {
+        Path dir = Path.of("configs/cards");
+        Json snap = Json.load(dir.resolve("snap.json"));
+        SnapConfig reduced = SnapConfig.parse(Json.of("snap.json (reduced)", Json.withOverrides("snap.json", snap.node(),
+                Map.of("trial.duration", "0.3", "params.t3", "0.25", "fingertip.mesh", "\"coarse\"", "fingertip.softLayers", "1",
+                        "hold.warmup", "0.1"))), null);
+        var materials = CardsConfig.materials(dir.resolve("materials.json"), null);
+        var solver = CardsConfig.solver(dir.resolve("solver.json"));
+        SnapParams p = new SnapParams(0, 0.05, 0.004, 0.05, 0.2, 0.01);
+        // a Newton iteration a simulated step at most (100 a simulated second; 10 for the 0.1 s hold, 30 for the run): a
+        // step that moves anything takes more than one
+        BudgetExceeded newton = assertThrows(BudgetExceeded.class, () -> new SnapTrial(reduced, materials, solver,
+                new TrialBudget(Integer.MAX_VALUE, Integer.MAX_VALUE, 100, 3600)).run(p));
+        assertTrue(newton.getMessage().matches("more than (10|30) Newton iterations by step \\d+ .*"), newton.getMessage());
+        // 10,000 hash entries: fewer than the coarse scene's boxes enter (each spans a few 3 mm cells)
+        BudgetExceeded memory = assertThrows(BudgetExceeded.class, () -> new SnapTrial(reduced, materials, solver,
+                new TrialBudget(10_000, Integer.MAX_VALUE, 1e6, 3600)).run(p));
+        assertTrue(memory.getMessage().startsWith("the spatial hash needs more than 10000 cell entries"), memory.getMessage());
     }
 }

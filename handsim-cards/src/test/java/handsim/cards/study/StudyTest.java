@@ -98,10 +98,18 @@ class StudyTest {
         Study[] studies = new Study[3];
         for (int workers = 1; workers <= 3; workers++) {
             AtomicInteger inFlight = new AtomicInteger(), maxInFlight = new AtomicInteger();
+            int w = workers;
             studies[workers - 1] = Study.openOrCreate(tmp.resolve("w" + workers), config(3), SEED, provenance("workers " + workers));
             studies[workers - 1].run(p -> {
                 maxInFlight.accumulateAndGet(inFlight.incrementAndGet(), Math::max);
                 try {
+                    // the first trials wait (10 s at most) until as many run at once as the study has workers: what is
+                    // measured is whether it starts that many together, not whether a trial of a few ms outlasts the
+                    // study's writing of the last one's file (forced to disk)
+                    long deadline = System.nanoTime() + 10_000_000_000L;
+                    while (p.number() < w && maxInFlight.get() < w && System.nanoTime() < deadline) {
+                        Thread.sleep(1);
+                    }
                     return branin(p);
                 } finally {
                     inFlight.decrementAndGet();

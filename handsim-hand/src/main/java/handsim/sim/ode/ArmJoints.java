@@ -34,7 +34,7 @@ final class ArmJoints {
     /** Each body's angular velocity (rad/s, world), the torso's (zero) last. */
     private final double[] angularVels;
     /** Each DOF's world axis. */
-    private final double[] worldAxes;
+    final double[] worldAxes;
     private final double[] relative = new double[4];
     private final double[] omegaWorld = new double[3];
     private final double[] omegaParent = new double[3];

@@ -9,8 +9,8 @@ import java.net.URLClassLoader;
 import org.ode4j.ode.OdeHelper;
 
 /**
- * Simulators whose ode4j has a class loader of its own, for stepping several worlds on several
- * threads of one JVM.
+ * Simulators for stepping several worlds on several threads of one JVM: for ode4j's quickStep,
+ * each with an ode4j of its own class loader.
  *
  * <p>Why: ode4j keeps process-wide mutable state. quickStep shuffles its constraint rows with
  * ODE's one random generator ({@code Misc.dRandInt}, reseeded by {@link OdeSimulator#reset}), so
@@ -24,6 +24,12 @@ import org.ode4j.ode.OdeHelper;
  *
  * <p>One simulator per loader: a loader's simulator must be stepped by one thread at a time,
  * which {@link Simulator} asks of every simulator anyway.
+ *
+ * <p>handsim's own step ({@link SimConfig.Stepper#HANDSIM}) draws its row order from a generator
+ * of its own world and leaves quickStep's statics untouched; what else of ode4j a step runs (the
+ * colliders, bodies, geoms) keeps no state across worlds. Its simulators share the one ode4j of
+ * the application's class loader, bit-identical to separate runs whatever the number of threads
+ * ({@code HandsimWorkersTest}).
  */
 public final class IsolatedEngine {
 
@@ -33,8 +39,14 @@ public final class IsolatedEngine {
     private IsolatedEngine() {
     }
 
-    /** A new {@link OdeSimulator} on a private copy of ode4j. */
+    /**
+     * A new {@link OdeSimulator} that steps independently of every other: on a private copy of
+     * ode4j when ode4j's quickStep steps it, on the shared one when handsim's step does.
+     */
     public static Simulator simulator(HandModel model, SimConfig config) {
+        if (config.stepper() == SimConfig.Stepper.HANDSIM) {
+            return new OdeSimulator(model, config);
+        }
         URL[] path = {location(OdeSimulator.class), location(OdeHelper.class)};
         ChildFirstLoader loader = new ChildFirstLoader(path, OdeSimulator.class.getClassLoader());
         try {

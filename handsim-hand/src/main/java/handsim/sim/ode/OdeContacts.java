@@ -5,6 +5,7 @@ import handsim.model.Body;
 import handsim.model.HandModel;
 import handsim.sim.ContactReport;
 import handsim.sim.SimConfig;
+import handsim.sim.island.ContactPoints;
 import handsim.sim.ode.OdeWorld.GeomTag;
 import handsim.sim.ode.OdeWorld.Kind;
 import java.util.List;
@@ -14,6 +15,7 @@ import org.ode4j.ode.DBody;
 import org.ode4j.ode.DCapsule;
 import org.ode4j.ode.DContact;
 import org.ode4j.ode.DContactBuffer;
+import org.ode4j.ode.DContactGeomBuffer;
 import org.ode4j.ode.DCylinder;
 import org.ode4j.ode.DGeom;
 import org.ode4j.ode.OdeConstants;
@@ -22,14 +24,17 @@ import org.ode4j.ode.OdeHelper;
 /**
  * Contact generation, the canonical collide step before quickStep: the object against the
  * hand/arm, the ground and the static boxes (the hand does not collide with itself), each contact
- * a joint with the ERP and CFM of the paper's compliant contact model from the masses of its two
- * bodies (sec. 4.1); the hand contacts reported per body and their depth.
+ * with the ERP and CFM of the paper's compliant contact model from the masses of its two bodies
+ * (sec. 4.1), made an ode4j contact joint for quickStep or, for handsim's step, handed to its
+ * {@link ContactPoints} as geometry; the hand contacts reported per body and their depth.
  */
 final class OdeContacts {
 
     private final SimConfig config;
     private final OdeWorld w;
     private final DContactBuffer contactBuffer;
+    /** The colliders' view of {@link #contactBuffer}; ode4j makes a new one per call of getGeomBuffer. */
+    private final DContactGeomBuffer geomBuffer;
     private final CylinderCapsuleCollider cylinderCapsule = new CylinderCapsuleCollider();
     /** Contact ERP and CFM of the object against each hand body, and against static geometry. */
     private final double[] handErp;
@@ -43,11 +48,18 @@ final class OdeContacts {
     boolean broadPhase = true;
     private final double[] objectRotation = new double[4];
     private final double[] centre = new double[6];
+    /** Where handsim's step takes the contacts, null when ode4j's quickStep steps (contact joints). */
+    private final ContactPoints points;
+    /** The object's body index in {@link #points}. */
+    private final int objectIndex;
 
-    OdeContacts(OdeWorld w, SimConfig config, int bodyCount) {
+    OdeContacts(OdeWorld w, SimConfig config, int bodyCount, ContactPoints points, int objectIndex) {
         this.w = w;
         this.config = config;
+        this.points = points;
+        this.objectIndex = objectIndex;
         contactBuffer = new DContactBuffer(config.maxContactsPerPair());
+        geomBuffer = contactBuffer.getGeomBuffer();
         handErp = new double[bodyCount];
         handCfm = new double[bodyCount];
     }
@@ -110,8 +122,8 @@ final class OdeContacts {
         boolean cylinderCapsulePair = o1 instanceof DCylinder && o2 instanceof DCapsule
                 || o1 instanceof DCapsule && o2 instanceof DCylinder;
         int n = cylinderCapsulePair
-                ? cylinderCapsule.dColliderFn(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer())
-                : OdeHelper.collide(o1, o2, config.maxContactsPerPair(), contactBuffer.getGeomBuffer());
+                ? cylinderCapsule.dColliderFn(o1, o2, config.maxContactsPerPair(), geomBuffer)
+                : OdeHelper.collide(o1, o2, config.maxContactsPerPair(), geomBuffer);
         if (n == 0) {
             return;
         }
@@ -135,11 +147,18 @@ final class OdeContacts {
         DBody b2 = o2.getBody();
         for (int i = 0; i < n; i++) {
             DContact c = contactBuffer.get(i);
-            c.surface.mode = OdeConstants.dContactSoftERP | OdeConstants.dContactSoftCFM | OdeConstants.dContactApprox1;
-            c.surface.mu = config.friction();
-            c.surface.soft_erp = erp;
-            c.surface.soft_cfm = cfm;
-            OdeHelper.createContactJoint(w.world, w.contactGroup, c).attach(b1, b2);
+            if (points != null) {
+                // body 1 is the object's (o1 is always an object geom), body 2 the hand's or none
+                DVector3C p = c.geom.pos, normal = c.geom.normal;
+                points.add(objectIndex, other.kind() == Kind.HAND ? other.body() : -1, p.get0(), p.get1(), p.get2(),
+                        normal.get0(), normal.get1(), normal.get2(), c.geom.depth, erp, cfm, config.friction());
+            } else {
+                c.surface.mode = OdeConstants.dContactSoftERP | OdeConstants.dContactSoftCFM | OdeConstants.dContactApprox1;
+                c.surface.mu = config.friction();
+                c.surface.soft_erp = erp;
+                c.surface.soft_cfm = cfm;
+                OdeHelper.createContactJoint(w.world, w.contactGroup, c).attach(b1, b2);
+            }
             if (other.kind() == Kind.HAND) {
                 report.add(other.body(), c.geom.depth);
             }

@@ -63,6 +63,8 @@ final class OdeWorld {
     final Vec3[] centreOfMass;
     /** The limit motors of the ball joints, by joint index (null for the other joints). */
     final DAMotorJoint[] limitMotors;
+    /** Every joint in creation order, a ball joint's limit motor after it. */
+    final List<DJoint> joints = new ArrayList<>();
     /** The hand's geoms in model order, with their body and bounding sphere (centre relative to the centre of mass, radius). */
     final DGeom[] handGeoms;
     final int[] handGeomBody;
@@ -248,6 +250,7 @@ final class OdeWorld {
                 h.setAxis(-d0.axis().x(), -d0.axis().y(), -d0.axis().z());
                 h.setParamHiStop(d0.upper());
                 h.setParamLoStop(d0.lower());
+                joints.add(h);
             }
             case UNIVERSAL -> {
                 Dof d1 = model.dofs().get(j.firstDof() + 1);
@@ -260,6 +263,7 @@ final class OdeWorld {
                 u.setParam(DJoint.PARAM_N.dParamLoStop1, d0.lower());
                 u.setParam(DJoint.PARAM_N.dParamHiStop2, d1.upper());
                 u.setParam(DJoint.PARAM_N.dParamLoStop2, d1.lower());
+                joints.add(u);
             }
             case BALL -> {
                 DBallJoint ball = OdeHelper.createBallJoint(world);
@@ -278,6 +282,8 @@ final class OdeWorld {
                     m.setParam(loStop(s), d.lower());
                 }
                 limitMotors[j.index()] = m;
+                joints.add(ball);
+                joints.add(m);
             }
         }
     }

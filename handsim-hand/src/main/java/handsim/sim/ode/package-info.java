@@ -4,7 +4,10 @@
  * read with {@link handsim.kin.Kinematics} and ball-joint limits enforced by user-mode angular
  * motors fed with those angles, so the engine, the IK and the PD agree on every angle.
  *
+ * <p>The constrained step is ode4j's quickStep or handsim's own ({@code handsim.sim.island}),
+ * which this package drives on ode4j's bodies with ode4j's contact geometry.
+ *
  * <p>Imports ode4j (the only package that may), {@code handsim.math}, {@code handsim.model},
- * {@code handsim.kin} and {@code handsim.sim}.
+ * {@code handsim.kin}, {@code handsim.sim} and {@code handsim.sim.island}.
  */
 package handsim.sim.ode;

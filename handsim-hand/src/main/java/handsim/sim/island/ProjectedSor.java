@@ -1,0 +1,406 @@
+package handsim.sim.island;
+
+import static handsim.sim.island.ConstraintRows.CFM;
+import static handsim.sim.island.ConstraintRows.HI;
+import static handsim.sim.island.ConstraintRows.IMJ1;
+import static handsim.sim.island.ConstraintRows.IMJ2;
+import static handsim.sim.island.ConstraintRows.J1;
+import static handsim.sim.island.ConstraintRows.J2;
+import static handsim.sim.island.ConstraintRows.LO;
+import static handsim.sim.island.ConstraintRows.RHS;
+import static handsim.sim.island.ConstraintRows.STRIDE;
+
+import java.util.Arrays;
+
+/**
+ * Projected Gauss-Seidel with successive over-relaxation over one island's rows, ODE's SOR-LCP:
+ * every row's rhs becomes the velocity error it must remove, rhs/h - J (v/h + M^-1 f); each row is
+ * scaled by w / (J M^-1 J^T + cfm) (w the over-relaxation); then every iteration sweeps the rows,
+ * each taking the impulse change that zeroes its residual, clamped to its bounds (a friction
+ * row's to mu times its normal row's current impulse), and carrying it to the bodies through
+ * fc = M^-1 J^T lambda at once. Rows without friction bounds go first; every 8th iteration from
+ * the 8th the order is shuffled with the world's generator.
+ *
+ * <p>Until the first shuffle, consecutive rows of the same two bodies (a joint's rows, a contact's
+ * friction pair) are swept as a block: each row's J fc is the block's starting fc times J plus
+ * the earlier rows' impulse changes times their coupling J_k M^-1 J_i^T, computed once per step,
+ * and fc takes the block's changes at its end, in row order. That is the same Gauss-Seidel
+ * update, row after row; it only shortens the chain each row waits on, from the whole J fc of
+ * the fc its predecessor changed to one product (the sums' last bits differ). Products are
+ * accumulated with fused multiply-adds ({@link Math#fma}: one rounding, the CPU's FMA
+ * instruction where it has one).
+ */
+final class ProjectedSor {
+
+    /** The shuffle period in iterations, ODE's. */
+    private static final int SHUFFLE_PERIOD = 8;
+    /** The most rows of a block: a hinge's five and its stop, a ball's three and its Euler stops. */
+    private static final int MAX_BLOCK = 8;
+
+    /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
+    final double[] fc;
+    /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
+    private final double[] free;
+    /** The island's rows in their first sweep order (see {@link #pack}), and per row its body offsets and normal row. */
+    private double[] data = new double[0];
+    private int[] meta = new int[0];
+    private double[] lambda = new double[0];
+    private int[] order = new int[0];
+    /** Each assembled row's index in {@link #data}. */
+    private int[] position = new int[0];
+    /** Block b holds packed rows [blockStart[b], blockStart[b + 1]). */
+    private int[] blockStart = new int[1];
+    private int blockCount;
+    /** Packed row k's couplings with the earlier rows i of its block, at MAX_BLOCK k + (i - block start). */
+    private double[] coupling = new double[0];
+    /** The impulse changes of the block being swept. */
+    private final double[] blockDelta = new double[MAX_BLOCK];
+
+
+    ProjectedSor(int bodyCount) {
+        fc = new double[6 * bodyCount];
+        free = new double[6 * bodyCount];
+    }
+
+    /** The free motion of every body the rows may touch, once per step. */
+    void prepare(RigidBodies bodies, double h) {
+        Arrays.fill(fc, 0);
+        for (int i = 0; i < bodies.count; i++) {
+            if (bodies.active[i]) {
+                bodies.freeMotion(i, h, free, 6 * i);
+            }
+        }
+    }
+
+    /**
+     * Solves rows [start, end) (one island) in {@code iterations} sweeps; adds their effect to
+     * {@link #fc}. The rows are copied in their sweep order (rows without friction bounds first)
+     * into the solver's own arrays, so that a sweep reads them one after another.
+     */
+    void solve(ConstraintRows rows, int start, int end, RigidBodies bodies, double h, int iterations, double sor,
+            ShuffleRandom random) {
+        int m = end - start;
+        if (m == 0) {
+            return;
+        }
+        pack(rows, start, m);
+        double rh = 1 / h;
+        double[] d = data;
+        for (int k = 0; k < m; k++) {
+            int o = STRIDE * k;
+            d[o + RHS] *= rh;
+            d[o + CFM] *= rh;
+            lambda[k] = 0;
+            order[k] = k;
+        }
+        for (int k = 0; k < m; k++) {
+            addFreeMotion(d, STRIDE * k, meta[3 * k], meta[3 * k + 1]);
+        }
+        for (int k = 0; k < m; k++) {
+            scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
+        }
+        couple(m);
+        boolean shuffled = false;
+        for (int it = 0; it < iterations; it++) {
+            if (it >= SHUFFLE_PERIOD && it % SHUFFLE_PERIOD == 0) {
+                for (int k = 1; k < m; k++) {
+                    int swap = random.below(k + 1);
+                    int t = order[k];
+                    order[k] = order[swap];
+                    order[swap] = t;
+                }
+                shuffled = true;
+            }
+            if (shuffled) {
+                sweep(m);
+            } else {
+                sweepBlocks();
+            }
+        }
+    }
+
+    /**
+     * The blocks of the packed order (runs of rows of the same two bodies, at most MAX_BLOCK
+     * long) and each row's couplings J_k M^-1 J_i^T (J scaled) with the earlier rows i of its block.
+     */
+    private void couple(int m) {
+        if (blockStart.length < m + 1) {
+            blockStart = new int[order.length + 1];
+            coupling = new double[MAX_BLOCK * order.length];
+        }
+        double[] d = data;
+        blockCount = 0;
+        int start = 0;
+        for (int k = 1; k <= m; k++) {
+            if (k == m || k - start == MAX_BLOCK || meta[3 * k] != meta[3 * start] || meta[3 * k + 1] != meta[3 * start + 1]) {
+                blockStart[blockCount++] = start;
+                start = k;
+            }
+        }
+        blockStart[blockCount] = m;
+        for (int bl = 0; bl < blockCount; bl++) {
+            int s = blockStart[bl];
+            boolean two = meta[3 * s + 1] >= 0;
+            for (int k = s + 1; k < blockStart[bl + 1]; k++) {
+                int o = STRIDE * k;
+                for (int i = s; i < k; i++) {
+                    int p = STRIDE * i;
+                    double sum = 0;
+                    for (int c = 0; c < 6; c++) {
+                        sum += d[o + J1 + c] * d[p + IMJ1 + c];
+                    }
+                    if (two) {
+                        for (int c = 0; c < 6; c++) {
+                            sum += d[o + J2 + c] * d[p + IMJ2 + c];
+                        }
+                    }
+                    coupling[MAX_BLOCK * k + i - s] = sum;
+                }
+            }
+        }
+    }
+
+    /**
+     * Copies rows [start, start + m) into {@link #data} in their first sweep order, rows without
+     * a friction index first, each group in assembly order; {@link #meta} holds each row's 6 b1,
+     * 6 b2 (-1 without a body 2) and the packed index of its normal row (-1 for none).
+     */
+    private void pack(ConstraintRows rows, int start, int m) {
+        if (order.length < m) {
+            int n = Math.max(m, 2 * order.length);
+            order = new int[n];
+            position = new int[n];
+            lambda = new double[n];
+            meta = new int[3 * n];
+            data = new double[STRIDE * n];
+        }
+        int frictionRows = 0;
+        for (int i = start; i < start + m; i++) {
+            frictionRows += rows.findex[i] >= 0 ? 1 : 0;
+        }
+        int head = 0, tail = m - frictionRows;
+        for (int i = start; i < start + m; i++) {
+            int p = rows.findex[i] < 0 ? head++ : tail++;
+            position[i - start] = p;
+            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p, STRIDE);
+            meta[3 * p] = 6 * rows.body1[i];
+            meta[3 * p + 1] = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
+        }
+        for (int i = start; i < start + m; i++) {
+            int f = rows.findex[i];
+            meta[3 * position[i - start] + 2] = f < 0 ? -1 : position[f - start];
+        }
+    }
+
+    /** rhs += J (-(v/h + M^-1 f)) of the row's bodies (at fc offsets a, b). */
+    private void addFreeMotion(double[] d, int o, int a, int b) {
+        double sum = 0;
+        for (int k = 0; k < 6; k++) {
+            sum += d[o + J1 + k] * free[a + k];
+        }
+        if (b >= 0) {
+            for (int k = 0; k < 6; k++) {
+                sum += d[o + J2 + k] * free[b + k];
+            }
+        }
+        d[o + RHS] += sum;
+    }
+
+    /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
+    private static void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
+        inverseMassTimes(d, o + J1, o + IMJ1, a / 6, bodies);
+        double sum = 0;
+        for (int k = 0; k < 6; k++) {
+            sum += d[o + IMJ1 + k] * d[o + J1 + k];
+        }
+        if (b >= 0) {
+            inverseMassTimes(d, o + J2, o + IMJ2, b / 6, bodies);
+            for (int k = 0; k < 6; k++) {
+                sum += d[o + IMJ2 + k] * d[o + J2 + k];
+            }
+        }
+        double cfm = d[o + CFM];
+        double ad = sor / (sum + cfm);
+        d[o + CFM] = cfm * ad;
+        d[o + RHS] *= ad;
+        for (int k = 0; k < 6; k++) {
+            d[o + J1 + k] *= ad;
+        }
+        if (b >= 0) {
+            for (int k = 0; k < 6; k++) {
+                d[o + J2 + k] *= ad;
+            }
+        }
+    }
+
+    private static void inverseMassTimes(double[] d, int j, int out, int b, RigidBodies bodies) {
+        double im = bodies.inverseMass[b];
+        for (int k = 0; k < 3; k++) {
+            d[out + k] = im * d[j + k];
+        }
+        Matrix3.multiply(bodies.inverseInertiaWorld, 9 * b, d, j + 3, d, out + 3);
+    }
+
+    /**
+     * One Gauss-Seidel sweep over the packed rows in their order, block by block (see the class
+     * comment): the block's bodies' fc read once, each row's J fc from it and the couplings, fc
+     * written once after the block.
+     */
+    private void sweepBlocks() {
+        double[] d = data;
+        double[] lambda = this.lambda;
+        double[] f = fc;
+        double[] cpl = coupling;
+        double[] bd = blockDelta;
+        for (int bl = 0; bl < blockCount; bl++) {
+            int s = blockStart[bl];
+            int e = blockStart[bl + 1];
+            int a = meta[3 * s];
+            int b = meta[3 * s + 1];
+            double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
+            double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
+            if (b >= 0) {
+                c0 = f[b];
+                c1 = f[b + 1];
+                c2 = f[b + 2];
+                c3 = f[b + 3];
+                c4 = f[b + 4];
+                c5 = f[b + 5];
+            }
+            double previous = 0;
+            for (int k = s; k < e; k++) {
+                int o = STRIDE * k;
+                double sum = Math.fma(a1, d[o + 1], a0 * d[o]) + Math.fma(a3, d[o + 3], a2 * d[o + 2]) + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+                if (b >= 0) {
+                    sum += Math.fma(c1, d[o + 7], c0 * d[o + 6]) + Math.fma(c3, d[o + 9], c2 * d[o + 8]) + Math.fma(c5, d[o + 11], c4 * d[o + 10]);
+                }
+                int q = MAX_BLOCK * k - s;
+                for (int i = s; i < k - 1; i++) {
+                    sum = Math.fma(bd[i - s], cpl[q + i], sum);
+                }
+                if (k > s) {
+                    sum = Math.fma(previous, cpl[q + k - 1], sum);
+                }
+                double old = lambda[k];
+                double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
+                double lo, hi;
+                int normal = meta[3 * k + 2];
+                if (normal >= 0) {
+                    hi = Math.abs(d[o + HI] * lambda[normal]);
+                    lo = -hi;
+                } else {
+                    lo = d[o + LO];
+                    hi = d[o + HI];
+                }
+                double next = old + delta;
+                if (next < lo) {
+                    delta = lo - old;
+                    next = lo;
+                } else if (next > hi) {
+                    delta = hi - old;
+                    next = hi;
+                }
+                lambda[k] = next;
+                bd[k - s] = delta;
+                previous = delta;
+            }
+            for (int k = s; k < e; k++) {
+                int o = STRIDE * k;
+                double delta = bd[k - s];
+                a0 = Math.fma(delta, d[o + IMJ1], a0);
+                a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                if (b >= 0) {
+                    c0 = Math.fma(delta, d[o + IMJ2], c0);
+                    c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                    c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                    c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                    c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                }
+            }
+            f[a] = a0;
+            f[a + 1] = a1;
+            f[a + 2] = a2;
+            f[a + 3] = a3;
+            f[a + 4] = a4;
+            f[a + 5] = a5;
+            if (b >= 0) {
+                f[b] = c0;
+                f[b + 1] = c1;
+                f[b + 2] = c2;
+                f[b + 3] = c3;
+                f[b + 4] = c4;
+                f[b + 5] = c5;
+            }
+        }
+    }
+
+    /**
+     * One Gauss-Seidel sweep over the island's rows in {@link #order}, row by row (the shuffled
+     * iterations). The two bodies' parts of J fc are summed pairwise rather than left to right,
+     * and each body's fc is read once: the sweep is bound by the latency of this sum, each row
+     * waiting for the fc its predecessor changed.
+     */
+    private void sweep(int m) {
+        double[] d = data;
+        double[] lambda = this.lambda;
+        int[] meta = this.meta;
+        double[] f = fc;
+        for (int k = 0; k < m; k++) {
+            int i = order[k];
+            int o = STRIDE * i;
+            int a = meta[3 * i];
+            int b = meta[3 * i + 1];
+            double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
+            double s = Math.fma(a1, d[o + 1], a0 * d[o]) + Math.fma(a3, d[o + 3], a2 * d[o + 2]) + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+            double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
+            if (b >= 0) {
+                c0 = f[b];
+                c1 = f[b + 1];
+                c2 = f[b + 2];
+                c3 = f[b + 3];
+                c4 = f[b + 4];
+                c5 = f[b + 5];
+                s += Math.fma(c1, d[o + 7], c0 * d[o + 6]) + Math.fma(c3, d[o + 9], c2 * d[o + 8]) + Math.fma(c5, d[o + 11], c4 * d[o + 10]);
+            }
+            double old = lambda[i];
+            double delta = (d[o + RHS] - old * d[o + CFM]) - s;
+            double lo, hi;
+            int normal = meta[3 * i + 2];
+            if (normal >= 0) {
+                hi = Math.abs(d[o + HI] * lambda[normal]);
+                lo = -hi;
+            } else {
+                lo = d[o + LO];
+                hi = d[o + HI];
+            }
+            double next = old + delta;
+            if (next < lo) {
+                delta = lo - old;
+                next = lo;
+            } else if (next > hi) {
+                delta = hi - old;
+                next = hi;
+            }
+            lambda[i] = next;
+            f[a] = Math.fma(delta, d[o + IMJ1], a0);
+            f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
+            f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
+            f[a + 3] = Math.fma(delta, d[o + IMJ1 + 3], a3);
+            f[a + 4] = Math.fma(delta, d[o + IMJ1 + 4], a4);
+            f[a + 5] = Math.fma(delta, d[o + IMJ1 + 5], a5);
+            if (b >= 0) {
+                f[b] = Math.fma(delta, d[o + IMJ2], c0);
+                f[b + 1] = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                f[b + 2] = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                f[b + 3] = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                f[b + 4] = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                f[b + 5] = Math.fma(delta, d[o + IMJ2 + 5], c5);
+            }
+        }
+    }
+}
