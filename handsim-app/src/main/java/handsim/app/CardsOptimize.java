@@ -1,10 +1,8 @@
 package handsim.app;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import handsim.cards.sleight.SnapObjective;
-import handsim.cards.sleight.SnapParams;
-import handsim.cards.sleight.SnapStudy;
-import handsim.cards.sleight.SnapTrial;
+import handsim.cards.sleight.CardSleight;
+import handsim.cards.sleight.SleightObjective;
 import handsim.cards.study.RemoteTrials;
 import handsim.cards.study.Study;
 import handsim.cards.study.StudyConfig;
@@ -17,6 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -25,22 +24,24 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code handsim cards optimize}: a TPE study of a card sleight (thesis 3.2.4, Fig. 4.9), kept in
- * a folder that the same command resumes after a kill, with the best trial replayed into
- * {@code best/} (its trajectory, frames and a strip like thesis Fig. 4.8).
+ * {@code handsim cards optimize}: a TPE or MOTPE study of a card sleight (thesis 3.2.4, Fig. 4.9,
+ * 4.11), kept in a folder that the same command resumes after a kill, with the chosen trial
+ * replayed into {@code chosen/} (its trajectory, frames and a strip).
  */
 @Command(name = "optimize", mixinStandardHelpOptions = true,
-        description = "Search a sleight's bone trajectory with TPE (Optuna 3.6.1's semantics): trials as JSON, resumable after a kill "
-                + "(run the same command again), the optimisation history (thesis Fig. 4.9), the best parameters, and the best "
-                + "trial's frames and strip (thesis Fig. 4.8). Results do not depend on --workers.")
+        description = "Search a sleight's bone trajectory with TPE / MOTPE (Optuna 3.6.1's semantics): trials as JSON, resumable after a "
+                + "kill (run the same command again), the optimisation history (thesis Fig. 4.9), the Pareto front of several objectives "
+                + "(Fig. 4.11), the chosen trial (the one closest to zero with each objective scaled by its tolerance) and its frames "
+                + "and strip. Results do not depend on --workers.")
 final class CardsOptimize implements Callable<Integer> {
 
-    static final String BEST_DIR = "best";
+    static final String CHOSEN_DIR = "chosen";
 
-    @Option(names = "--sleight", required = true, paramLabel = "NAME", description = "the sleight to optimise: snap (Card Snapping, thesis 4.2.4)")
+    @Option(names = "--sleight", required = true, paramLabel = "NAME", description = "the sleight to optimise: snap (Card Snapping, thesis 4.2.4) "
+            + "or double-lift (Double Lift, thesis 4.2.5)")
     String sleight;
 
-    @Option(names = "--trials", required = true, paramLabel = "N", description = "run until trials 0 .. N-1 have finished (the thesis ran 89)")
+    @Option(names = "--trials", required = true, paramLabel = "N", description = "run until trials 0 .. N-1 have finished (the thesis ran 89 and 297)")
     int trials;
 
     @Option(names = "--seed", required = true, paramLabel = "S", description = "the study's seed")
@@ -54,9 +55,13 @@ final class CardsOptimize implements Callable<Integer> {
             + "a folder holding a study resumes it")
     Path out;
 
-    @Option(names = "--config", paramLabel = "FILE", description = "the study's search space, sampler settings and parallelTrials "
-            + "(default: configs/cards/snap-study.json)")
+    @Option(names = "--config", paramLabel = "FILE", description = "the study's objectives (with tolerances), search space, sampler "
+            + "settings and parallelTrials (default: configs/cards/SLEIGHT-study.json)")
     Path config;
+
+    @Option(names = "--sampler", paramLabel = "KIND", description = "independent or multivariate TPE (Optuna's multivariate=False / True) "
+            + "instead of the config's choice; part of the study")
+    String sampler;
 
     @Mixin
     CardsSceneOptions scene;
@@ -64,9 +69,9 @@ final class CardsOptimize implements Callable<Integer> {
     @Mixin
     ClusterOptions cluster;
 
-    @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (snap, materials, "
-            + "solver), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted paths); part of "
-            + "the study, so a resume needs the same")
+    @Option(names = "--set", paramLabel = "FILE.KEY=VALUE", description = "override a field of configs/cards/FILE.json (the sleight's, "
+            + "materials, solver, budget), e.g. --set snap.trial.alphaTarget=4 or --set solver.parallel=false (repeatable; dotted "
+            + "paths); part of the study, so a resume needs the same")
     List<String> overrides = List.of();
 
     @Spec
@@ -74,9 +79,6 @@ final class CardsOptimize implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        if (!sleight.equals("snap")) {
-            throw new IllegalArgumentException("--sleight must be snap, got \"" + sleight + "\"");
-        }
         if (trials < 1) {
             throw new IllegalArgumentException("--trials must be >= 1, got " + trials);
         }
@@ -88,76 +90,118 @@ final class CardsOptimize implements Callable<Integer> {
         if (workers != null && cluster.remote()) {
             throw new IllegalArgumentException("--workers goes without --master: the cluster's cores run the trials");
         }
-        Path configFile = config != null ? config : Home.resolve("configs/cards/snap-study.json");
+        if (!handsim.cards.sleight.Sleights.NAMES.contains(sleight)) {
+            throw new IllegalArgumentException("--sleight must be one of " + String.join(", ", handsim.cards.sleight.Sleights.NAMES)
+                    + ", got \"" + sleight + "\"");
+        }
+        Path configFile = config != null ? config : CardsCommand.studyConfig(sleight);
         if (!Files.isRegularFile(configFile)) {
             throw new IllegalArgumentException("--config " + configFile + " is not a file");
         }
-        StudyConfig studyConfig = StudyConfig.load(configFile);
-        SnapTrial trial = SnapTrial.fromConfigs(Home.root(), scene.mesh, scene.card, RunOptions.keyValues(overrides));
-        SnapStudy.check(studyConfig, trial.scene().config().duration(), configFile.toString());
-        Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.scene().config().meshName() + "__" + seed);
-        new OutputPaths().heldFolder("--out", dir, Study.STUDY_FILE, Study.BEST_FILE, "history.png", Study.TRIALS_DIR + "/",
-                BEST_DIR + "/").check();
+        StudyConfig studyConfig = withSampler(StudyConfig.load(configFile), sampler);
+        CardSleight trial = CardsCommand.sleight(sleight, scene, RunOptions.keyValues(overrides));
+        trial.checkSearchSpace(studyConfig, configFile.toString());
+        Path dir = out != null ? out : Home.resolve("runs").resolve("cards-optimize__" + sleight + "-" + trial.meshName() + "__" + seed);
+        new OutputPaths().heldFolder("--out", dir, studyOutputs(studyConfig)).check();
 
         ObjectNode provenance = Provenance.of(spec.commandLine().getParseResult().originalArgs());
         // a cluster is reached before the study folder is made: a master that cannot be used leaves nothing behind
         Study study;
         try (RemoteCalls calls = cluster.remote() ? cluster.connect("handsim cards optimize " + dir.getFileName()) : null) {
             study = Study.openOrCreate(dir, studyConfig, seed, trial.inputs(), provenance);
-            System.out.printf(Locale.ROOT, "handsim cards optimize: Card Snapping, %s fingertips (%d nodes, %d free), %s cards, alpha_target %s "
-                    + "deg%n", trial.scene().config().meshName(), trial.scene().world().nodeCount(), trial.scene().world().freeNodeCount(),
-                    trial.inputs().get("card").asText(), trial.scene().config().alphaTargetDegrees());
+            if (studyConfig.multiObjective()) {
+                study.displayObjectives(1000, "mm"); // Double Lift's objectives are lengths in metres
+            }
+            System.out.printf(Locale.ROOT, "handsim cards optimize: %s, %s fingertips (%d nodes, %d free), %s cards, %s%n", trial.title(),
+                    trial.meshName(), trial.world().nodeCount(), trial.world().freeNodeCount(), trial.inputs().get("card").asText(),
+                    studyConfig.sampler().multivariate() ? "multivariate TPE" : "independent TPE");
             if (calls != null) {
-                // each executor builds the trial from its documents and simulates the hold once for the trials it runs
+                // each executor builds the sleight from its documents and makes its start state once for the trials it runs
                 int toRun = trials - (int) study.trials().stream().filter(t -> t.number() < trials).count();
-                try (RemoteTrials remote = new RemoteTrials(calls, SnapObjective.of(trial), studyConfig, seed, toRun)) {
+                try (RemoteTrials remote = new RemoteTrials(calls, SleightObjective.of(trial), studyConfig, seed, toRun)) {
                     study.run(remote, trials, System.out);
                 }
             } else {
                 long h0 = System.nanoTime();
-                trial.heldState();
-                System.out.printf(Locale.ROOT, "hold (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
-                study.run(SnapStudy.objective(trial), trials, workers != null ? workers : studyConfig.parallelTrials(), System.out);
+                trial.startState(trial.defaults());
+                System.out.printf(Locale.ROOT, "start (warm-up checkpoint, shared by every trial): %.1f s wall%n", (System.nanoTime() - h0) * 1e-9);
+                study.run(trial.objective(), trials, workers != null ? workers : studyConfig.parallelTrials(), System.out);
             }
         }
 
-        TrialRecord best = study.best().orElse(null);
-        if (best == null) {
-            System.out.println("no trial completed: no best trial to replay");
+        TrialRecord chosen = study.chosen().orElse(null);
+        if (chosen == null) {
+            System.out.println("no trial completed: no trial to replay");
             return 1;
         }
-        System.out.printf(Locale.ROOT, "best: trial %d, objective %.4g deg, alpha_end %.4g deg; params %s%n", best.number(), best.values()[0],
-                best.info().get("alphaEnd"), best.trialParams(studyConfig).values());
-        replayBest(dir.resolve(BEST_DIR), best, studyConfig, trial);
-        System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history.png, " + BEST_DIR + "/)");
+        System.out.printf(Locale.ROOT, "chosen: trial %d, %s%s; params %s%n", chosen.number(), values(studyConfig, chosen),
+                studyConfig.hasTolerances() ? (studyConfig.meets(chosen.values()) ? ", meets every tolerance" : ", MISSES a tolerance") : "",
+                chosen.trialParams(studyConfig).values());
+        replay(dir.resolve(CHOSEN_DIR), chosen, studyConfig, trial);
+        System.out.println("study folder: " + dir + " (" + Study.BEST_FILE + ", history*.png" + (studyConfig.multiObjective() ? ", pareto.png" : "")
+                + ", " + CHOSEN_DIR + "/)");
         return 0;
     }
 
+    /** What a study folder holds: study.json, best.json, the trials, the history and Pareto figures, the chosen trial's recording. */
+    static String[] studyOutputs(StudyConfig c) {
+        List<String> names = new java.util.ArrayList<>(List.of(Study.STUDY_FILE, Study.BEST_FILE, Study.TRIALS_DIR + "/", CHOSEN_DIR + "/"));
+        if (c.multiObjective()) {
+            c.objectives().forEach(name -> names.add("history-" + name + ".png"));
+            names.add("pareto.png");
+        } else {
+            names.add("history.png");
+        }
+        return names.toArray(String[]::new);
+    }
+
+    /** The config with independent or multivariate TPE as {@code kind} asks (null: as it is). */
+    static StudyConfig withSampler(StudyConfig c, String kind) {
+        if (kind == null) {
+            return c;
+        }
+        if (!kind.equals("independent") && !kind.equals("multivariate")) {
+            throw new IllegalArgumentException("--sampler must be independent or multivariate, got \"" + kind + "\"");
+        }
+        var s = c.sampler();
+        return new StudyConfig(c.objectives(), c.directions(), c.tolerances(), c.params(), new handsim.cards.tpe.TpeSettings(s.nStartupTrials(),
+                s.nEiCandidates(), s.considerPrior(), s.priorWeight(), s.considerMagicClip(), s.considerEndpoints(), kind.equals("multivariate")),
+                c.parallelTrials());
+    }
+
+    static String values(StudyConfig c, TrialRecord t) {
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < c.objectives().size(); i++) {
+            s.append(i == 0 ? "" : ", ").append(c.objectives().get(i)).append(' ').append(String.format(Locale.ROOT, "%.4g", t.values()[i]));
+        }
+        return s.toString();
+    }
+
     /**
-     * Runs the best trial again, recording it, into {@code bestDir} (trajectory, frames, strip,
+     * Runs the chosen trial again, recording it, into {@code chosenDir} (trajectory, frames, strip,
      * result.json with the trial's number); skipped when the folder already holds that trial.
-     * Trials are deterministic, so the replay reproduces the recorded objective bit for bit.
+     * Trials are deterministic, so the replay reproduces the recorded objectives bit for bit.
      */
-    private void replayBest(Path bestDir, TrialRecord best, StudyConfig studyConfig, SnapTrial trial) throws IOException {
-        Path result = bestDir.resolve("result.json");
+    private void replay(Path chosenDir, TrialRecord chosen, StudyConfig studyConfig, CardSleight trial) throws IOException {
+        Path result = chosenDir.resolve("result.json");
         boolean framesWanted = !scene.noFrames;
-        if (Files.exists(result) && Json.load(result).integer("trial") == best.number()
-                && (!framesWanted || Files.exists(bestDir.resolve("strip.png")))) {
-            System.out.println("best trial " + best.number() + " already recorded in " + bestDir);
+        if (Files.exists(result) && Json.load(result).integer("trial") == chosen.number()
+                && (!framesWanted || Files.exists(chosenDir.resolve("strip.png")))) {
+            System.out.println("chosen trial " + chosen.number() + " already recorded in " + chosenDir);
             return;
         }
-        System.out.println("replaying best trial " + best.number() + " to record its frames...");
-        SnapParams p = SnapStudy.params(best.trialParams(studyConfig));
-        CardsCommand.Recorded run = CardsCommand.record(trial, p);
-        double recorded = best.values()[0];
-        boolean same = Double.compare(run.result().objective(), recorded) == 0;
+        System.out.println("replaying chosen trial " + chosen.number() + " to record its frames...");
+        Map<String, Double> p = chosen.trialParams(studyConfig).values();
+        CardsRecording.Recorded run = CardsRecording.record(trial, p);
+        boolean same = java.util.Arrays.equals(run.outcome().values(), chosen.values());
         if (!same) {
-            System.out.printf(Locale.ROOT, "the replay's objective %.17g differs from the trial's %.17g: the code or configs changed "
-                    + "since the trial ran%n", run.result().objective(), recorded);
+            System.out.printf(Locale.ROOT, "the replay's objectives %s differ from the trial's %s: the code or configs changed since the "
+                    + "trial ran%n", java.util.Arrays.toString(run.outcome().values()), java.util.Arrays.toString(chosen.values()));
         }
-        ObjectNode json = CardsCommand.resultJson(run.result(), p, trial);
-        json.put("trial", best.number());
+        ObjectNode json = CardsRecording.resultJson(trial, p, run, studyConfig.objectives());
+        json.put("trial", chosen.number());
         json.put("reproducesTrial", same);
-        CardsCommand.writeRecording(bestDir, run, json, scene.frameWidth(), scene.height);
+        json.put("meetsTolerances", studyConfig.meets(run.outcome().values()));
+        CardsRecording.write(chosenDir, run, json, CardViews.of(sleight, ViewerSession.config()), scene.frameWidth(), scene.height);
     }
 }

@@ -5,32 +5,23 @@ import handsim.cards.sleight.SnapTrial;
 import handsim.config.Home;
 import handsim.viewer.SurfacePlayer;
 import handsim.viewer.ViewerConfig;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
-/** {@code view --scene snap}: plays a Card Snapping trajectory in the viewer's window. */
+/** {@code view --scene snap|double-lift}: plays a card trial's trajectory in the viewer's window. */
 final class CardsPlayback {
 
     private CardsPlayback() {
     }
 
-    /** The trajectory of a study's best trial, as {@code cards optimize} records it. */
-    static Path bestTrajectory(Path study) {
-        Path file = study.resolve(CardsOptimize.BEST_DIR).resolve("trajectory.json");
-        if (!Files.isRegularFile(file)) {
-            throw new IllegalArgumentException("--study " + study + " holds no " + CardsOptimize.BEST_DIR
-                    + "/trajectory.json (is it a study folder of cards optimize, run to its end?)");
-        }
-        return file;
-    }
-
-    static int play(Path file, int maxFrames) {
+    /**
+     * Plays {@code file} (null: the configured Card Snapping trial, run first with coarse
+     * fingertips), for {@code maxFrames} drawn frames when positive, and writes the last one to
+     * {@code screenshot} when not null.
+     */
+    static int play(String scene, Path file, int maxFrames, Path screenshot) {
         Trajectory t;
         if (file != null) {
-            if (!Files.isRegularFile(file)) {
-                throw new IllegalArgumentException("--trajectory " + file + " is not a file");
-            }
             t = Trajectory.read(file);
         } else {
             System.out.println("handsim view: running the configured Card Snapping trial with coarse fingertips...");
@@ -41,11 +32,16 @@ final class CardsPlayback {
             trial.run(trial.scene().config().defaults(), (state, step) -> recording.record(state));
         }
         Trajectory shown = t;
-        List<SurfacePlayer.Frame> frames = shown.frames().stream()
-                .map(f -> new SurfacePlayer.Frame(f.time(), CardsCommand.surfaces(shown, f))).toList();
         ViewerConfig config = ViewerSession.config();
-        int drawn = SurfacePlayer.play("handsim: Card Snapping", frames, CardsCommand.camera(config), config, 0.25, maxFrames);
+        CardViews.View view = CardViews.of(scene, config);
+        List<SurfacePlayer.Frame> frames = shown.frames().stream()
+                .map(f -> new SurfacePlayer.Frame(f.time(), CardViews.surfaces(shown, f, view))).toList();
+        int drawn = SurfacePlayer.play("handsim: " + (scene.equals("snap") ? "Card Snapping" : "Double Lift"), frames, CardViews.camera(view),
+                config, 0.25, maxFrames, screenshot);
         System.out.println("handsim view: drew " + drawn + " frames (a quarter of real time, looping)");
+        if (screenshot != null) {
+            System.out.println("handsim view: screenshot " + screenshot);
+        }
         return 0;
     }
 }

@@ -2,10 +2,10 @@ package handsim.app;
 
 import picocli.CommandLine.Option;
 
-/** The options {@code cards snap} and {@code cards optimize} share: the fingertip mesh, the card preset and the frames. */
+/** The options of the card commands: the fingertip mesh, the card preset and the frames. */
 final class CardsSceneOptions {
 
-    @Option(names = "--mesh", paramLabel = "NAME", description = "fingertip resolution: thesis, reduced or coarse (default: snap.json's)")
+    @Option(names = "--mesh", paramLabel = "NAME", description = "fingertip resolution: thesis, reduced or coarse (default: the sleight config's)")
     String mesh;
 
     @Option(names = "--card", paramLabel = "PRESET", description = "card material preset of configs/cards/materials.json (default: the file's)")

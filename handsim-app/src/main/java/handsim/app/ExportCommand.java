@@ -24,7 +24,8 @@ import picocli.CommandLine.Option;
 @Command(name = "export", mixinStandardHelpOptions = true,
         description = "Write a headless run's animation for Blender, Unity, Unreal or a web page: glTF 2.0 (FILE.glb, or "
                 + "FILE.gltf with FILE.bin; the arm and hand as a node hierarchy with meshes, the object as its own node) or BVH "
-                + "(the skeleton with the model's Euler channels, the object as a second root). Takes the scene options of render.")
+                + "(the skeleton with the model's Euler channels, the object as a second root). Takes the scene options of render; "
+                + "with --scene snap|double-lift a recorded card trial instead, as glTF with morph-target animation.")
 final class ExportCommand implements Callable<Integer> {
 
     /** The highest sampling rate: below the controller's 500 Hz, so that every sample is a new state. */
@@ -51,8 +52,21 @@ final class ExportCommand implements Callable<Integer> {
     @Mixin
     SceneOptions scene;
 
+    @Mixin
+    CardsSceneChoice cards;
+
     @Override
     public Integer call() throws Exception {
+        if (cards.given()) {
+            Path file = cards.file(true);
+            new OutputPaths().file("--out", out).check(); // first: the folder it makes is given up again if the export fails
+            ExportTarget target = ExportTarget.of(out, format, "--out", "--format");
+            if (target.format() != ExportTarget.Format.GLTF) {
+                throw new IllegalArgumentException("--out: a card trial is exported as glTF (.glb or .gltf), got " + out);
+            }
+            new OutputPaths().files("--out", target.files()).check();
+            return CardsExport.export(cards.scene, file, target);
+        }
         scene.validate();
         if (!(rate > 0 && rate <= MAX_RATE)) {
             throw new IllegalArgumentException("--rate must be in (0, " + (int) MAX_RATE + "] Hz, got " + rate);

@@ -76,7 +76,8 @@ final class OutputPaths {
      * on it is refused before it loads anything; by the command's own check otherwise.
      */
     private static final Map<String, List<String>> HELD = Map.of("demo", List.of("--out/"), "evaluate", List.of("--json"),
-            "cards snap", List.of("--out/"), "cards optimize", List.of("--out/"), "train", List.of("--resume/"),
+            "cards snap", List.of("--out/"), "cards lift", List.of("--out/"), "cards optimize", List.of("--out/"),
+            "cards robust", List.of("--study/"), "train", List.of("--resume/"),
             "dagger", List.of("--resume/"));
 
     /** Starts a command run: every path its options and parameters name is an input unless declared an output. */

@@ -20,7 +20,8 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = "Write a headless run as PNG frames DIR/00000.png, 00001.png, ... (make a video with "
-                + "ffmpeg -framerate F -i DIR/%%05d.png out.mp4). Needs an X display; the launcher uses xvfb-run without one.")
+                + "ffmpeg -framerate F -i DIR/%%05d.png out.mp4). Needs an X display; the launcher uses xvfb-run without one. "
+                + "With --scene snap|double-lift, a recorded card trial's frames and strip.png as cards snap|lift --out draws them.")
 final class RenderCommand implements Callable<Integer> {
 
     @Option(names = "--out", paramLabel = "DIR", required = true, description = "folder for the frames")
@@ -38,8 +39,14 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     SceneOptions scene;
 
+    @Mixin
+    CardsSceneChoice cards;
+
     @Override
     public Integer call() throws Exception {
+        if (cards.given()) {
+            return renderCards();
+        }
         scene.validate();
         if (fps < 1 || fps > 240) {
             throw new IllegalArgumentException("--fps must be in [1, 240], got " + fps);
@@ -69,6 +76,24 @@ final class RenderCommand implements Callable<Integer> {
             }
             System.out.printf("wrote %d frames to %s (%.0f ms per frame)%n", frames, out, (System.nanoTime() - t0) / 1e6 / frames);
         }
+        return 0;
+    }
+
+    /** A recorded card trial drawn again (the sleight's view of configs/cards/views.json): DIR/frames/ and DIR/strip.png. */
+    private int renderCards() throws Exception {
+        Path file = cards.file(true);
+        if (width < 16 || width > 8192 || height < 16 || height > 8192) {
+            throw new IllegalArgumentException("--width and --height must be in [16, 8192] pixels, got " + width + " x " + height);
+        }
+        new OutputPaths().folder("--out", out).check();
+        if (!ViewerSession.hasDisplay()) {
+            throw new IllegalArgumentException("no X display (DISPLAY is not set): render draws with OpenGL "
+                    + "(scripts/handsim render runs it under xvfb-run)");
+        }
+        handsim.cards.sim.Trajectory t = handsim.cards.sim.Trajectory.read(file);
+        int n = CardsRecording.renderFrames(t, CardViews.of(cards.scene, ViewerSession.config()), out.resolve("frames"), width, height);
+        CardsRecording.writeStrip(out.resolve("frames"), n, out.resolve("strip.png"));
+        System.out.println("wrote " + n + " frames to " + out.resolve("frames") + " and " + out.resolve("strip.png"));
         return 0;
     }
 }

@@ -35,30 +35,17 @@ final class ViewCommand implements Callable<Integer> {
     @Option(names = "--screenshot", paramLabel = "FILE", description = "write the last frame drawn to FILE (PNG) on exit")
     Path screenshot;
 
-    @Option(names = "--scene", paramLabel = "NAME", description = "snap: play a Card Snapping trial instead (the soft-body "
-            + "cards of thesis 4.2.4)")
-    String scene;
-
-    @Option(names = "--trajectory", paramLabel = "FILE", description = "with --scene snap: the trajectory.json of `cards snap "
-            + "--out` to play (default: run the configured trial with coarse fingertips first)")
-    Path trajectory;
-
-    @Option(names = "--study", paramLabel = "DIR", description = "with --scene snap: play the best trial of a `cards optimize` study folder")
-    Path study;
+    @Mixin
+    CardsSceneChoice cards;
 
     @Override
     public Integer call() {
-        if (scene != null) {
-            if (!scene.equals("snap")) {
-                throw new IllegalArgumentException("--scene must be snap, got \"" + scene + "\"");
-            }
-            if (trajectory != null && study != null) {
-                throw new IllegalArgumentException("--trajectory and --study: give one of them");
-            }
-            return CardsPlayback.play(study != null ? CardsPlayback.bestTrajectory(study) : trajectory, benchmarkFrames);
-        }
         if (benchmarkFrames < 0 || benchmarkFrames > 10_000_000) {
             throw new IllegalArgumentException("--benchmark-frames must be in [0, 10000000], got " + benchmarkFrames);
+        }
+        if (cards.given()) {
+            new OutputPaths().file("--screenshot", screenshot).check();
+            return CardsPlayback.play(cards.scene, cards.file(false), benchmarkFrames, screenshot);
         }
         who.validateFlipPolicies();
         HeightGoals goals = DemoCommand.parseHeights(heights);

@@ -27,7 +27,7 @@ public final class ExportTarget {
             this.extensions = List.of(extensions);
         }
 
-        String lower() {
+        public String lower() {
             return name().toLowerCase(Locale.ROOT);
         }
     }
@@ -87,6 +87,18 @@ public final class ExportTarget {
         return file;
     }
 
+    /** A file to write and its whole content. */
+    public record FileContent(Path file, byte[] bytes) {
+    }
+
+    /** The files a glTF document makes at this target, in the order to write them: a .gltf's .bin first, so the .gltf never lacks it. */
+    List<FileContent> gltfFiles(GltfDocument.Gltf gltf) {
+        if (isSeparateGltf()) {
+            return List.of(new FileContent(binFile(), gltf.bin()), new FileContent(file, gltf.gltf(binFile().getFileName().toString())));
+        }
+        return List.of(new FileContent(file, gltf.glb()));
+    }
+
     public Format format() {
         return format;
     }
@@ -102,13 +114,8 @@ public final class ExportTarget {
             writeAtomically(List.of(file), List.of(BvhWriter.write(clip).getBytes(StandardCharsets.US_ASCII)));
             return;
         }
-        GltfWriter.Gltf gltf = GltfWriter.build(clip, options);
-        if (isSeparateGltf()) {
-            // the buffer first: a .gltf is never in place without its .bin
-            writeAtomically(List.of(binFile(), file), List.of(gltf.bin(), gltf.gltf(binFile().getFileName().toString())));
-        } else {
-            writeAtomically(List.of(file), List.of(gltf.glb()));
-        }
+        List<FileContent> files = gltfFiles(GltfWriter.build(clip, options));
+        writeAtomically(files.stream().map(FileContent::file).toList(), files.stream().map(FileContent::bytes).toList());
     }
 
     private boolean isSeparateGltf() {

@@ -1,6 +1,5 @@
 package handsim.export;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -16,15 +15,8 @@ import handsim.model.HandModel;
 import handsim.model.Shape;
 import handsim.sim.WorldSnapshot;
 import handsim.task.Goal;
-import java.io.ByteArrayOutputStream;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Function;
 import java.util.function.IntFunction;
 
@@ -40,74 +32,26 @@ import java.util.function.IntFunction;
  */
 final class GltfWriter {
 
-    /** glTF's codes: component types, buffer view targets. */
-    static final int FLOAT = 5126, UNSIGNED_SHORT = 5123, UNSIGNED_INT = 5125, ARRAY_BUFFER = 34962,
-            ELEMENT_ARRAY_BUFFER = 34963;
-    static final String UNLIT = "KHR_materials_unlit";
-
     private final MotionClip clip;
     private final ExportOptions options;
+    private final GltfDocument doc;
     private final JsonNodeFactory f = JsonNodeFactory.instance;
-    private final ObjectNode root = f.objectNode();
-    private final ArrayNode nodes = f.arrayNode();
-    private final ArrayNode meshes = f.arrayNode();
-    private final ArrayNode materials = f.arrayNode();
-    private final ArrayNode accessors = f.arrayNode();
-    private final ArrayNode bufferViews = f.arrayNode();
-    private final ArrayNode samplers = f.arrayNode();
-    private final ArrayNode channels = f.arrayNode();
-    private final ByteArrayOutputStream bin = new ByteArrayOutputStream();
-    private final Map<String, Integer> materialIndex = new LinkedHashMap<>();
-    private boolean unlitUsed;
     private int times;
-
-    /** The JSON document and its binary buffer. */
-    record Gltf(ObjectNode json, byte[] bin) {
-
-        /** As one binary .glb: the header, the JSON chunk and the binary chunk. */
-        byte[] glb() {
-            byte[] text = padded(json.toString().getBytes(StandardCharsets.UTF_8), (byte) ' ');
-            byte[] data = padded(bin, (byte) 0);
-            int length = 12 + 8 + text.length + 8 + data.length;
-            ByteBuffer out = ByteBuffer.allocate(length).order(ByteOrder.LITTLE_ENDIAN);
-            out.putInt(0x46546C67).putInt(2).putInt(length); // "glTF", version 2
-            out.putInt(text.length).putInt(0x4E4F534A).put(text); // "JSON"
-            out.putInt(data.length).putInt(0x004E4942).put(data); // "BIN\0"
-            return out.array();
-        }
-
-        /** As a .gltf document whose buffer is the file {@code binName} beside it. */
-        byte[] gltf(String binName) {
-            ObjectNode copy = json.deepCopy();
-            ((ObjectNode) copy.withArray("buffers").get(0)).put("uri", binName);
-            try {
-                return new ObjectMapper().writerWithDefaultPrettyPrinter().writeValueAsBytes(copy);
-            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
-                throw new IllegalStateException(e);
-            }
-        }
-
-        private static byte[] padded(byte[] b, byte pad) {
-            byte[] out = Arrays.copyOf(b, (b.length + 3) / 4 * 4);
-            Arrays.fill(out, b.length, out.length, pad);
-            return out;
-        }
-    }
 
     private GltfWriter(MotionClip clip, ExportOptions options) {
         this.clip = clip;
         this.options = options;
+        this.doc = new GltfDocument(options.roughness());
     }
 
-    static Gltf build(MotionClip clip, ExportOptions options) {
+    static GltfDocument.Gltf build(MotionClip clip, ExportOptions options) {
         return new GltfWriter(clip, options).build();
     }
 
-    private Gltf build() {
+    private GltfDocument.Gltf build() {
         if (clip.samples().size() < 2) {
             throw new IllegalArgumentException("an animation needs at least two samples, got " + clip.samples().size());
         }
-        root.putObject("asset").put("version", "2.0").put("generator", "handsim");
         times = timeAccessor();
         List<Integer> scene = new ArrayList<>();
         scene.add(arm());
@@ -120,23 +64,7 @@ final class GltfWriter {
             scene.add(floor());
         }
         options.camera().ifPresent(c -> scene.add(camera(c)));
-        root.put("scene", 0);
-        ArrayNode sceneNodes = root.putArray("scenes").addObject().put("name", clip.title()).putArray("nodes");
-        scene.forEach(sceneNodes::add);
-        root.set("nodes", nodes);
-        root.set("meshes", meshes);
-        root.set("materials", materials);
-        ObjectNode animation = root.putArray("animations").addObject();
-        animation.put("name", clip.title());
-        animation.set("channels", channels);
-        animation.set("samplers", samplers);
-        root.set("accessors", accessors);
-        root.set("bufferViews", bufferViews);
-        root.putArray("buffers").addObject().put("byteLength", bin.size());
-        if (unlitUsed) {
-            root.putArray("extensionsUsed").add(UNLIT);
-        }
-        return new Gltf(root, bin.toByteArray());
+        return doc.finish(clip.title(), scene);
     }
 
     // ---- the arm and hand -----------------------------------------------------------------
@@ -150,7 +78,7 @@ final class GltfWriter {
             int n = node(b.name());
             bodyNode[b.index()] = n;
             Vec3 parentOrigin = b.parent() < 0 ? Vec3.ZERO : model.bodies().get(b.parent()).origin();
-            ObjectNode node = (ObjectNode) nodes.get(n);
+            ObjectNode node = doc.nodeObject(n);
             node.set("translation", vector(b.origin().minus(parentOrigin)));
             if (!b.shapes().isEmpty()) {
                 node.put("mesh", mesh(b.name(), ShapeMeshes.of(b.shapes(), Detail.FINE),
@@ -207,14 +135,14 @@ final class GltfWriter {
         animate(n, i -> held[i]);
         boolean alwaysThere = samples.stream().allMatch(s -> s.objectSpec() != null);
         if (sizes.size() == 1 && alwaysThere) {
-            ((ObjectNode) nodes.get(n)).put("mesh", mesh(name, ShapeMeshes.of(sizes.get(0), Detail.FINE), material));
+            doc.nodeObject(n).put("mesh", mesh(name, ShapeMeshes.of(sizes.get(0), Detail.FINE), material));
             return n;
         }
         for (int k = 0; k < sizes.size(); k++) {
             List<Shape> shapes = sizes.get(k);
             String sizeName = names.get(k) + " " + (k + 1);
             int child = node(sizeName);
-            ((ObjectNode) nodes.get(child)).put("mesh", mesh(sizeName, ShapeMeshes.of(shapes, Detail.FINE), material));
+            doc.nodeObject(child).put("mesh", mesh(sizeName, ShapeMeshes.of(shapes, Detail.FINE), material));
             addChild(n, child);
             stepChannel(child, "scale", s -> s.objectSpec() != null && s.objectSpec().shapes().equals(shapes) ? new Vec3(1, 1, 1) : Vec3.ZERO);
         }
@@ -231,7 +159,7 @@ final class GltfWriter {
         for (int k = 0; k < boxes.size(); k++) {
             WorldSnapshot.StaticBox box = boxes.get(k);
             int n = node("box " + (k + 1));
-            ObjectNode node = (ObjectNode) nodes.get(n);
+            ObjectNode node = doc.nodeObject(n);
             node.set("translation", vector(box.center()));
             node.set("scale", vector(box.size()));
             node.put("mesh", mesh("box", ShapeMeshes.box(Vec3.ZERO, new Vec3(1, 1, 1)),
@@ -250,7 +178,7 @@ final class GltfWriter {
         List<MotionClip.Sample> samples = clip.samples();
         if (samples.stream().anyMatch(s -> s.goal() instanceof Goal.Height)) {
             int n = node("goal plane");
-            ((ObjectNode) nodes.get(n)).put("mesh", mesh("goal plane", ShapeMeshes.square(options.goalPlaneHalfSize()),
+            doc.nodeObject(n).put("mesh", mesh("goal plane", ShapeMeshes.square(options.goalPlaneHalfSize()),
                     material("goal plane", options.colours().goalPlane(), true)));
             stepChannel(n, "translation", s -> s.goal() instanceof Goal.Height h
                     ? new Vec3(h.center().x(), h.height(), h.center().z()) : Vec3.ZERO);
@@ -259,7 +187,7 @@ final class GltfWriter {
         }
         if (samples.stream().anyMatch(s -> s.goal() instanceof Goal.Box)) {
             int n = node("goal box");
-            ((ObjectNode) nodes.get(n)).put("mesh", mesh("goal box", ShapeMeshes.box(Vec3.ZERO, new Vec3(1, 1, 1)),
+            doc.nodeObject(n).put("mesh", mesh("goal box", ShapeMeshes.box(Vec3.ZERO, new Vec3(1, 1, 1)),
                     material("goal box", options.colours().goalBox(), false)));
             stepChannel(n, "translation", s -> s.goal() instanceof Goal.Box b ? b.center() : Vec3.ZERO);
             stepChannel(n, "scale", s -> s.goal() instanceof Goal.Box b ? b.size() : Vec3.ZERO);
@@ -271,31 +199,21 @@ final class GltfWriter {
     /** The checkered floor at the ground's height: one mesh, a primitive per colour, unlit as in the viewer. */
     private int floor() {
         int n = node("floor");
-        ObjectNode node = (ObjectNode) nodes.get(n);
+        ObjectNode node = doc.nodeObject(n);
         node.set("translation", vector(new Vec3(0, clip.groundHeight(), 0)));
-        ObjectNode mesh = meshes.addObject().put("name", "floor");
+        ObjectNode mesh = doc.meshes.addObject().put("name", "floor");
         ArrayNode primitives = mesh.putArray("primitives");
         primitives.add(primitive(ShapeMeshes.checker(options.floorHalfSize(), options.floorTile(), true),
                 material("floor light", options.colours().floorLight(), true)));
         primitives.add(primitive(ShapeMeshes.checker(options.floorHalfSize(), options.floorTile(), false),
                 material("floor dark", options.colours().floorDark(), true)));
-        node.put("mesh", meshes.size() - 1);
+        node.put("mesh", doc.meshes.size() - 1);
         return n;
     }
 
     /** A perspective camera (it looks down its -z, y up) at the eye, turned to the target. */
     private int camera(ExportOptions.CameraView c) {
-        ObjectNode perspective = root.withArray("cameras").addObject().put("type", "perspective").putObject("perspective");
-        perspective.put("yfov", c.fovY()).put("znear", c.near()).put("zfar", c.far());
-        Vec3 forward = c.target().minus(c.eye()).normalized();
-        Vec3 right = forward.cross(Vec3.Y).normalized();
-        Vec3 up = right.cross(forward);
-        int n = node("camera");
-        ObjectNode node = (ObjectNode) nodes.get(n);
-        node.put("camera", 0);
-        node.set("translation", vector(c.eye()));
-        node.set("rotation", quaternion(Quat.fromFrame(right, up, forward.negate())));
-        return n;
+        return doc.camera(c);
     }
 
     // ---- animation ------------------------------------------------------------------------
@@ -306,11 +224,8 @@ final class GltfWriter {
         float[] t = new float[samples.size()];
         for (int i = 0; i < t.length; i++) {
             t[i] = (float) samples.get(i).time();
-            if (i > 0 && !(t[i] > t[i - 1])) {
-                throw new IllegalArgumentException("sample times must increase (float seconds), got " + t[i - 1] + " then " + t[i]);
-            }
         }
-        return accessor(view(floats(t), null), FLOAT, t.length, "SCALAR", new float[] {t[0]}, new float[] {t[t.length - 1]});
+        return doc.times(t);
     }
 
     /** Linear translation and rotation channels of node {@code n} from each sample's frame. */
@@ -331,8 +246,8 @@ final class GltfWriter {
             rotation[4 * i + 2] = (float) q.z();
             rotation[4 * i + 3] = (float) q.w();
         }
-        channel(n, "translation", "LINEAR", accessor(view(floats(translation), null), FLOAT, samples.size(), "VEC3", null, null));
-        channel(n, "rotation", "LINEAR", accessor(view(floats(rotation), null), FLOAT, samples.size(), "VEC4", null, null));
+        channel(n, "translation", "LINEAR", accessor(view(floats(translation), null), GltfDocument.FLOAT, samples.size(), "VEC3", null, null));
+        channel(n, "rotation", "LINEAR", accessor(view(floats(rotation), null), GltfDocument.FLOAT, samples.size(), "VEC4", null, null));
     }
 
     /** A step-interpolated channel of node {@code n} (a scale of 0 hides it). */
@@ -342,120 +257,55 @@ final class GltfWriter {
         for (int i = 0; i < samples.size(); i++) {
             put(v, 3 * i, value.apply(samples.get(i)));
         }
-        channel(n, path, "STEP", accessor(view(floats(v), null), FLOAT, samples.size(), "VEC3", null, null));
+        channel(n, path, "STEP", accessor(view(floats(v), null), GltfDocument.FLOAT, samples.size(), "VEC3", null, null));
     }
 
     private void channel(int node, String path, String interpolation, int output) {
-        samplers.addObject().put("input", times).put("interpolation", interpolation).put("output", output);
-        ObjectNode c = channels.addObject().put("sampler", samplers.size() - 1);
-        c.putObject("target").put("node", node).put("path", path);
+        doc.channel(node, path, interpolation, times, output);
     }
 
     // ---- meshes and materials -------------------------------------------------------------
 
     private int mesh(String name, TriangleMesh mesh, int material) {
-        ObjectNode m = meshes.addObject().put("name", name);
+        ObjectNode m = doc.meshes.addObject().put("name", name);
         m.putArray("primitives").add(primitive(mesh, material));
-        return meshes.size() - 1;
+        return doc.meshes.size() - 1;
     }
 
     private ObjectNode primitive(TriangleMesh mesh, int material) {
         ObjectNode p = f.objectNode();
         int n = mesh.vertexCount();
         ObjectNode attributes = p.putObject("attributes");
-        attributes.put("POSITION", accessor(view(floats(mesh.positions()), ARRAY_BUFFER), FLOAT, n, "VEC3", mesh.min(), mesh.max()));
-        attributes.put("NORMAL", accessor(view(floats(mesh.normals()), ARRAY_BUFFER), FLOAT, n, "VEC3", null, null));
-        int[] indices = mesh.indices();
-        boolean small = n <= 0xffff;
-        ByteBuffer b = ByteBuffer.allocate(indices.length * (small ? 2 : 4)).order(ByteOrder.LITTLE_ENDIAN);
-        for (int i : indices) {
-            if (small) {
-                b.putShort((short) i);
-            } else {
-                b.putInt(i);
-            }
-        }
-        p.put("indices", accessor(view(b.array(), ELEMENT_ARRAY_BUFFER), small ? UNSIGNED_SHORT : UNSIGNED_INT, indices.length,
-                "SCALAR", null, null));
+        attributes.put("POSITION", accessor(view(floats(mesh.positions()), GltfDocument.ARRAY_BUFFER), GltfDocument.FLOAT, n, "VEC3", mesh.min(), mesh.max()));
+        attributes.put("NORMAL", accessor(view(floats(mesh.normals()), GltfDocument.ARRAY_BUFFER), GltfDocument.FLOAT, n, "VEC3", null, null));
+        p.put("indices", doc.indices(mesh.indices(), n));
         p.put("material", material);
         p.put("mode", 4); // triangles
         return p;
     }
 
-    /**
-     * The material {@code name} of the viewer's colour {@code srgba} (made once): non-metallic,
-     * blended when translucent; {@code unlit} as the viewer draws the floor and the goal plane
-     * (the plane from both sides).
-     */
     private int material(String name, float[] srgba, boolean unlit) {
-        return materialIndex.computeIfAbsent(name, k -> {
-            ObjectNode m = materials.addObject().put("name", name);
-            ArrayNode colour = m.putObject("pbrMetallicRoughness").put("metallicFactor", 0.0).put("roughnessFactor", options.roughness())
-                    .putArray("baseColorFactor");
-            for (int i = 0; i < 3; i++) {
-                colour.add(linear(srgba[i]));
-            }
-            colour.add(srgba[3]);
-            if (srgba[3] < 1) {
-                m.put("alphaMode", "BLEND");
-            }
-            if (unlit) {
-                m.putObject("extensions").putObject(UNLIT);
-                unlitUsed = true;
-                m.put("doubleSided", srgba[3] < 1);
-            }
-            return materials.size() - 1;
-        });
+        return doc.material(name, srgba, unlit);
     }
-
-    /** sRGB's transfer function inverted (IEC 61966-2-1): the linear value glTF's colour factors hold. */
-    static double linear(double c) {
-        return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
-    }
-
-    // ---- nodes, accessors, buffer ---------------------------------------------------------
 
     private int node(String name) {
-        nodes.addObject().put("name", name);
-        return nodes.size() - 1;
+        return doc.node(name);
     }
 
     private void addChild(int parent, int child) {
-        ((ObjectNode) nodes.get(parent)).withArray("children").add(child);
+        doc.addChild(parent, child);
     }
 
     private int accessor(int view, int componentType, int count, String type, float[] min, float[] max) {
-        ObjectNode a = accessors.addObject().put("bufferView", view).put("componentType", componentType).put("count", count)
-                .put("type", type);
-        if (min != null) {
-            ArrayNode lo = a.putArray("min"), hi = a.putArray("max");
-            for (int i = 0; i < min.length; i++) {
-                lo.add(min[i]);
-                hi.add(max[i]);
-            }
-        }
-        return accessors.size() - 1;
+        return doc.accessor(view, componentType, count, type, min, max);
     }
 
-    /** Appends {@code data} to the buffer, 4-byte aligned, as a buffer view for {@code target} (null: animation data). */
     private int view(byte[] data, Integer target) {
-        while (bin.size() % 4 != 0) {
-            bin.write(0);
-        }
-        ObjectNode v = bufferViews.addObject().put("buffer", 0).put("byteOffset", bin.size()).put("byteLength", data.length);
-        if (target != null) {
-            v.put("target", target);
-        }
-        bin.write(data, 0, data.length);
-        return bufferViews.size() - 1;
+        return doc.view(data, target);
     }
 
     private static byte[] floats(float[] values) {
-        ByteBuffer b = ByteBuffer.allocate(4 * values.length).order(ByteOrder.LITTLE_ENDIAN);
-        for (float v : values) {
-            b.putFloat(v);
-        }
-        return b.array();
+        return GltfDocument.floats(values);
     }
 
     private static void put(float[] out, int at, Vec3 v) {

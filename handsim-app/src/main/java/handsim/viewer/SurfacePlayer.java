@@ -3,7 +3,12 @@ package handsim.viewer;
 import static org.lwjgl.glfw.GLFW.*;
 import static org.lwjgl.opengl.GL11.*;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
 import java.util.List;
+import org.lwjgl.BufferUtils;
 
 /**
  * Plays recorded frames of deforming surfaces (a card trial) in a window, looping, at {@code
@@ -20,9 +25,10 @@ public final class SurfacePlayer {
 
     /**
      * Opens a window and plays {@code frames} until closed, or for {@code maxFrames} drawn frames
-     * when positive. Returns the number of frames drawn.
+     * when positive; writes the last frame drawn to {@code screenshot} (PNG) when not null. Returns
+     * the number of frames drawn.
      */
-    public static int play(String title, List<Frame> frames, Camera camera, ViewerConfig config, double speed, int maxFrames) {
+    public static int play(String title, List<Frame> frames, Camera camera, ViewerConfig config, double speed, int maxFrames, Path screenshot) {
         if (frames.isEmpty()) {
             throw new IllegalArgumentException("no frames to play");
         }
@@ -52,6 +58,7 @@ public final class SurfacePlayer {
             double span = frames.get(frames.size() - 1).time() - start;
             long t0 = System.nanoTime();
             int drawn = 0;
+            Frame shown = frames.get(0);
             while (!glfwWindowShouldClose(window.handle) && (maxFrames <= 0 || drawn < maxFrames)) {
                 double t = start + ((System.nanoTime() - t0) * 1e-9 * speed) % Math.max(span, 1e-9);
                 Frame f = frames.get(0);
@@ -60,14 +67,31 @@ public final class SurfacePlayer {
                         f = candidate;
                     }
                 }
-                int[] size = window.framebufferSize();
-                scene.begin(camera, size[0], size[1]);
-                scene.drawSurfaces(f.surfaces());
+                draw(window, scene, camera, f);
                 glfwSwapBuffers(window.handle);
                 glfwPollEvents();
+                shown = f;
                 drawn++;
+            }
+            if (screenshot != null) {
+                int[] size = draw(window, scene, camera, shown);
+                ByteBuffer pixels = BufferUtils.createByteBuffer(size[0] * size[1] * 4);
+                glReadBuffer(GL_BACK);
+                try {
+                    FrameFolder.writePng(FrameFolder.toImage(size[0], size[1], OffscreenRenderer.readPixels(size[0], size[1], pixels)), screenshot);
+                } catch (IOException e) {
+                    throw new UncheckedIOException("cannot write the screenshot " + screenshot, e);
+                }
             }
             return drawn;
         }
+    }
+
+    /** Draws one frame into the window's back buffer; returns the framebuffer size (pixels). */
+    private static int[] draw(GlWindow window, SceneRenderer scene, Camera camera, Frame f) {
+        int[] size = window.framebufferSize();
+        scene.begin(camera, size[0], size[1]);
+        scene.drawSurfaces(f.surfaces());
+        return size;
     }
 }

@@ -18,7 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * {@code handsim cards optimize --sleight snap} end to end on coarse fingertips and a 0.1 s
- * trial: the study folder, the best trial replayed with its frames and played by the viewer, a
+ * trial: the study folder, the best (chosen) trial replayed with its frames and played by the viewer, a
  * resume after an interruption that gives the trials of an uninterrupted study run on another
  * number of workers, and bad input refused with status 2.
  */
@@ -27,7 +27,7 @@ class CardsOptimizeTest {
 
     /** A search space that fits the 0.1 s trial; two start-up trials, so the third comes from TPE. */
     private static final String CONFIG = """
-            {"objectives": [{"name": "objective", "direction": "minimize"}],
+            {"objectives": [{"name": "objective", "direction": "minimize", "tolerance": 5}],
              "params": [{"name": "t0", "low": 0.0, "high": 0.02}, {"name": "t1", "low": 0.02, "high": 0.04},
                         {"name": "vp", "low": 0.001, "high": 0.004}, {"name": "t2", "low": 0.04, "high": 0.05},
                         {"name": "t3", "low": 0.05, "high": 0.1}, {"name": "vs", "low": 0.005, "high": 0.04}],
@@ -61,22 +61,38 @@ class CardsOptimizeTest {
             assertTrue(t.isComplete(), "trial " + t.number() + ": " + t.error());
             assertTrue(t.info().get("minGap") > 0, "no interpenetration in trial " + t.number());
         }
-        // best.json names the trial of least objective; best/ holds its replay, which reproduces it
+        // best.json names the trial of least objective, which is also the chosen one (a single objective); chosen/ holds
+        // its replay, which reproduces it
         TrialRecord best = study.best().orElseThrow();
         double least = study.trials().stream().mapToDouble(t -> t.values()[0]).min().orElseThrow();
         assertEquals(least, best.values()[0], 0.0);
         assertEquals(best.number(), Json.load(whole.resolve(Study.BEST_FILE)).get("best").integer("number"));
-        Json replay = Json.load(whole.resolve("best/result.json"));
+        assertEquals(best.number(), Json.load(whole.resolve(Study.BEST_FILE)).get("chosen").integer("number"));
+        Json replay = Json.load(whole.resolve("chosen/result.json"));
         assertEquals(best.number(), replay.integer("trial"));
-        assertEquals(best.values()[0], replay.number("objectiveDegrees"), 0.0, "the replay gives the trial's objective bit for bit");
+        assertEquals(best.values()[0], replay.get("objectives").number("objective"), 0.0, "the replay gives the trial's objective bit for bit");
         assertTrue(replay.bool("reproducesTrial", false));
-        for (String f : List.of("history.png", "best/strip.png", "best/frames/00000.png", "best/trajectory.json")) {
+        for (String f : List.of("history.png", "chosen/strip.png", "chosen/frames/00000.png", "chosen/trajectory.json")) {
             assertTrue(Files.size(whole.resolve(f)) > 100, f);
         }
         // study.json records what the objective is (mesh and overridden snap.json)
         Json recorded = Json.load(whole.resolve(Study.STUDY_FILE)).get("objective");
         assertEquals("coarse", recorded.string("mesh"));
         assertEquals(0.1, recorded.get("snap").get("trial").number("duration"), 0.0);
+
+        // cards robust replays the chosen trial 13 times (each of 6 parameters -1 % and +1 % of its range, and on the
+        // reduced fingertips) and counts those within the 5 degree tolerance
+        assertEquals(0, Main.run("cards", "robust", "--study", whole.toString(), "--workers", "2"));
+        Json robust = Json.load(whole.resolve("robust.json"));
+        assertEquals(13, robust.integer("replays"));
+        int met = 0;
+        for (Json r : robust.array("results")) {
+            boolean within = r.has("values") && r.get("values").node().get(0).asDouble() <= 5;
+            assertEquals(within, r.bool("meetsTolerances", !within), r.string("label"));
+            met += within ? 1 : 0;
+        }
+        assertEquals(met, robust.integer("meetTolerances"));
+        assertEquals("reduced", robust.array("results").get(12).string("mesh"));
 
         // the viewer plays the study's best trial; a folder without one is refused
         assertEquals(0, Main.run("view", "--scene", "snap", "--study", whole.toString(), "--benchmark-frames", "2"));

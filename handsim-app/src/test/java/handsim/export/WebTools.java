@@ -17,9 +17,9 @@ import java.util.concurrent.TimeUnit;
  * tests tagged {@code browser}: they fail with what to install when a tool is missing (the
  * suite can leave them out with {@code -DexcludedGroups=browser}).
  */
-final class WebTools {
+public final class WebTools {
 
-    static final Path VIEWER = Path.of("scripts/gltf-viewer").toAbsolutePath();
+    public static final Path VIEWER = Path.of("scripts/gltf-viewer").toAbsolutePath();
     /** How long a tool may take (s): a validation or a screenshot takes a few seconds. */
     static final long TIMEOUT_SECONDS = 120;
 
@@ -27,7 +27,7 @@ final class WebTools {
     }
 
     /** Fails with what to install when node or the npm packages are missing. */
-    static void requireNode() {
+    public static void requireNode() {
         requireCommand("node", "node is not on PATH: install it (apt-get install nodejs npm), then npm ci in scripts/gltf-viewer "
                 + "(.ci/run does both), or leave these tests out with -DexcludedGroups=browser");
         if (!Files.isDirectory(VIEWER.resolve("node_modules/three")) || !Files.isDirectory(VIEWER.resolve("node_modules/gltf-validator"))) {
@@ -37,7 +37,7 @@ final class WebTools {
     }
 
     /** The Chromium command; fails with what to install when there is none. */
-    static String requireChromium() {
+    public static String requireChromium() {
         requireNode();
         for (String c : List.of("chromium", "chromium-browser")) {
             if (onPath(c)) {
@@ -50,7 +50,7 @@ final class WebTools {
     }
 
     /** Runs {@code command} in {@code dir} and returns what it printed on stdout; fails on a non-zero exit. */
-    static String run(Path dir, List<String> command) throws IOException, InterruptedException {
+    public static String run(Path dir, List<String> command) throws IOException, InterruptedException {
         Path out = Files.createTempFile("handsim-web", ".out"), err = Files.createTempFile("handsim-web", ".err");
         try {
             Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
@@ -72,7 +72,7 @@ final class WebTools {
      * animation), {@code width} x {@code height} pixels, by headless Chromium drawing WebGL
      * through SwiftShader.
      */
-    static Path screenshot(String query, int width, int height, Path png) throws IOException, InterruptedException {
+    public static Path screenshot(String query, int width, int height, Path png) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(requireChromium(), "--headless=new", "--no-sandbox", "--disable-gpu",
                 "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--allow-file-access-from-files", "--hide-scrollbars",
                 "--virtual-time-budget=10000", "--window-size=" + width + "," + height, "--screenshot=" + png.toAbsolutePath(),

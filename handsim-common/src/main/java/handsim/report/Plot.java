@@ -67,6 +67,20 @@ public final class Plot {
         Outputs.writePng(file, render());
     }
 
+    /** Charts side by side in one PNG (atomically, {@link Outputs}): pairwise projections of one figure. */
+    public static void writePngRow(Path file, List<Plot> plots) throws IOException {
+        if (plots.isEmpty()) {
+            throw new IllegalArgumentException("no charts to write to " + file);
+        }
+        BufferedImage row = new BufferedImage(WIDTH * plots.size(), HEIGHT, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = row.createGraphics();
+        for (int i = 0; i < plots.size(); i++) {
+            g.drawImage(plots.get(i).render(), i * WIDTH, 0, null);
+        }
+        g.dispose();
+        Outputs.writePng(file, row);
+    }
+
     BufferedImage render() {
         Axis xa = xAxis(), ya = yAxis();
         double[] xr = {xa.lo(), xa.hi()}, yr = {ya.lo(), ya.hi()};

@@ -32,7 +32,9 @@ import org.junit.jupiter.api.io.TempDir;
  * short Card Snapping study (reduced fingertips, 0.2 s trials, 6 trials, two at once) gives the
  * trial files of the same study on threads, byte for byte but for the wall times the trials
  * measured; so does the study when its driver is killed and the same command resumes it, and
- * when a worker is killed mid-study (the cluster runs its trial again and says what that lost).
+ * when a worker is killed mid-study (the cluster runs its trial again and says what that lost). A
+ * warm start's CMA-ES generation of throws and a DAgger round's teacher labels give the thread
+ * pool's files too.
  * The cluster is stopped after the tests, also when they fail.
  */
 @Tag("slow")
@@ -136,6 +138,18 @@ class ClusterCommandsTest {
                 .matcher(lines.toString(StandardCharsets.UTF_8));
         assertTrue(lost.find(), "the batch's last line says what the lost worker cost");
         assertTrue(Integer.parseInt(lost.group(1)) >= 1 && Double.parseDouble(lost.group(2)) > 0, lost.group());
+    }
+
+    @Test
+    @Order(4)
+    void aWarmStartGenerationOnTheClusterIsTheThreadPools() throws Exception {
+        SparkTrainingRunsTest.assertWarmStartOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("warmstart")), cluster.master());
+    }
+
+    @Test
+    @Order(5)
+    void aDaggerRoundsTeacherLabelsOnTheClusterAreTheThreadPools() throws Exception {
+        SparkTrainingRunsTest.assertDaggerRoundOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("dagger")), cluster.master());
     }
 
     private static int trialFiles(Path study) throws IOException {

@@ -13,7 +13,8 @@ import java.util.stream.Stream;
 /**
  * Byte-for-byte comparison of two runs' files, but for the wall times they measured (which no two
  * runs share, on one machine or many): a JSON line holding a time, {@code "seconds"}, {@code
- * "...Seconds"} or {@code "wall_s"}, is left out of both; every other byte must match.
+ * "...Seconds"} or {@code "wall_s"}, is left out of both; every other byte must match. Lock files
+ * ({@link handsim.report.Locks}) are not compared: they name the process that holds the folder.
  */
 final class SameBytes {
 
@@ -52,7 +53,7 @@ final class SameBytes {
         int compared = 0;
         for (Path f : files) {
             Path rel = expected.relativize(f);
-            if (skipped.stream().anyMatch(rel.toString()::startsWith)) {
+            if (skipped.stream().anyMatch(rel.toString()::startsWith) || handsim.report.Locks.isLockFile(f.getFileName().toString())) {
                 continue;
             }
             Path other = actual.resolve(rel);

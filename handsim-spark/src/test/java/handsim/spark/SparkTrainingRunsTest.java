@@ -16,11 +16,12 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code warmstart} and {@code dagger} through Spark in local mode ({@code local[2]}) against the
- * thread pool: a warm start's CMA-ES generations of throws give the same searches and dataset
- * byte for byte, and the same pretrained actor; a DAgger round's episodes give the same
- * demonstrations (teacher labels and the teacher's trials) byte for byte, and the same fitted
- * actor. What differs is only what describes the run (its folder's name, command line, wall time).
+ * {@code warmstart} and {@code dagger} through Spark in local mode ({@code local[2]}; ClusterCommandsTest
+ * runs the same on a standalone cluster) against the thread pool: a warm start's CMA-ES generations
+ * of throws give the same searches and dataset byte for byte, and the same pretrained actor; a
+ * DAgger round's episodes give the same demonstrations (teacher labels and the teacher's trials)
+ * byte for byte, and the same fitted actor. What differs is only what describes the run (its
+ * folder's name, command line, wall time).
  */
 @Tag("slow")
 class SparkTrainingRunsTest {
@@ -47,11 +48,21 @@ class SparkTrainingRunsTest {
 
     @Test
     void aWarmStartsGenerationsOnSparkAreTheThreadPools(@TempDir Path tmp) throws Exception {
+        assertWarmStartOnSparkIsTheThreadPools(tmp, "local[2]");
+    }
+
+    @Test
+    void aDaggerRoundsTeacherLabelsOnSparkAreTheThreadPools(@TempDir Path tmp) throws Exception {
+        assertDaggerRoundOnSparkIsTheThreadPools(tmp, "local[2]");
+    }
+
+    /** A short warm start (one CMA-ES generation of each of 3 searches) on two threads and on {@code master}: the same bytes. */
+    static void assertWarmStartOnSparkIsTheThreadPools(Path tmp, String master) throws Exception {
         // 3 initial conditions, 10 throws each: the start point, then one generation of λ = 9 (7 action entries)
         String[] warmstart = {"warmstart", "--config", "configs/train/flip-warmstart.json", "--set", "warmstart.initialConditions=3",
             "--set", "warmstart.keepReward=-100", "--set", "cmaes.maxEvaluations=10", "--set", "pretrain.epochs=2"};
         assertEquals(0, Main.run(with(warmstart, "--runs", tmp.resolve("threads").toString(), "--set", "run.workers=2")));
-        assertEquals(0, Main.run(with(warmstart, "--runs", tmp.resolve("spark").toString(), "--master", "local[2]")));
+        assertEquals(0, Main.run(with(warmstart, "--runs", tmp.resolve("spark").toString(), "--master", master)));
         Path a = onlyRun(tmp.resolve("threads")), b = onlyRun(tmp.resolve("spark"));
         for (String f : List.of("searches.json", "dataset.csv")) {
             assertEquals(-1L, Files.mismatch(a.resolve(f), b.resolve(f)), f + " byte for byte");
@@ -61,12 +72,12 @@ class SparkTrainingRunsTest {
         assertEquals(policyWithoutProvenance(a.resolve("pretrained-policy.json")), policyWithoutProvenance(b.resolve("pretrained-policy.json")));
     }
 
-    @Test
-    void aDaggerRoundsTeacherLabelsOnSparkAreTheThreadPools(@TempDir Path tmp) throws Exception {
+    /** A DAgger round of 2 episodes labelled by the teacher, on two threads and on {@code master}: the same bytes. */
+    static void assertDaggerRoundOnSparkIsTheThreadPools(Path tmp, String master) throws Exception {
         String[] dagger = {"dagger", "--config", "configs/train/flip-dagger.json", "--set", "dagger.rounds=1", "--set",
             "dagger.episodesPerRound=2", "--set", "dagger.maxDecisionsPerEpisode=2", "--set", "pretrain.epochs=2"};
         assertEquals(0, Main.run(with(dagger, "--runs", tmp.resolve("threads").toString(), "--set", "run.workers=2")));
-        assertEquals(0, Main.run(with(dagger, "--runs", tmp.resolve("spark").toString(), "--master", "local[2]")));
+        assertEquals(0, Main.run(with(dagger, "--runs", tmp.resolve("spark").toString(), "--master", master)));
         Path a = onlyRun(tmp.resolve("threads")), b = onlyRun(tmp.resolve("spark"));
         for (String f : List.of("demonstrations.csv", "demonstrations-trials.csv")) {
             assertEquals(-1L, Files.mismatch(a.resolve(f), b.resolve(f)), f + " byte for byte");

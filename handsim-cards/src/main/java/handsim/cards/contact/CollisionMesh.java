@@ -20,6 +20,8 @@ public final class CollisionMesh {
     final FrictionTable friction;
     final boolean hasGround;
     final double groundHeight;
+    /** per node: held in place (a bone or a fixed card), so a pair of only such nodes never changes */
+    final boolean[] fixedNode;
 
     /**
      * @param vertices      contact vertices (node indices)
@@ -32,10 +34,12 @@ public final class CollisionMesh {
      * @param isCard        per body: a card (else a fingertip)
      * @param friction      friction coefficients by pair kind
      * @param groundHeight  height of the static ground plane (m), or NaN for none
+     * @param fixedNode     per node: whether it is held in place; pairs of held primitives are
+     *                      left out (their barrier is constant), or null when every node moves
      */
     public CollisionMesh(int[] vertices, int[] edges, int[] faces, int[] bodyOfNode, double[] halfThickness,
                          boolean[] selfContact, double[] rest, boolean[] isCard, FrictionTable friction,
-                         double groundHeight) {
+                         double groundHeight, boolean[] fixedNode) {
         if (bodyOfNode.length >= 1 << 15) {
             throw new IllegalArgumentException("contact keys hold node indices below 32768, got " + bodyOfNode.length + " nodes");
         }
@@ -50,6 +54,17 @@ public final class CollisionMesh {
         this.friction = friction;
         this.hasGround = !Double.isNaN(groundHeight);
         this.groundHeight = groundHeight;
+        this.fixedNode = fixedNode == null ? new boolean[bodyOfNode.length] : fixedNode.clone();
+    }
+
+    /** Whether nodes a and b are both held in place. */
+    boolean fixed(int a, int b) {
+        return fixedNode[a] && fixedNode[b];
+    }
+
+    /** Whether nodes a, b and c are all held in place. */
+    boolean fixed(int a, int b, int c) {
+        return fixedNode[a] && fixedNode[b] && fixedNode[c];
     }
 
     public int vertexCount() {

@@ -82,9 +82,11 @@ final class ContactCandidates {
             int f0 = mesh.faces[3 * f];
             int f1 = mesh.faces[3 * f + 1];
             int f2 = mesh.faces[3 * f + 2];
+            boolean faceFixed = mesh.fixed(f0, f1, f2);
             vertexHash.query(fb[0], fb[1], fb[2], fb[3], fb[4], fb[5], v -> {
                 int p = mesh.vertices[v];
-                if (p == f0 || p == f1 || p == f2 || !mesh.bodiesMayTouch(p, f0) || !overlaps(vertexBoxes, v, fb)) {
+                if (p == f0 || p == f1 || p == f2 || !mesh.bodiesMayTouch(p, f0) || (faceFixed && mesh.fixedNode[p])
+                        || !overlaps(vertexBoxes, v, fb)) {
                     return;
                 }
                 ptPairs = roomForPair(ptPairs, ptCount);
@@ -98,13 +100,17 @@ final class ContactCandidates {
             final int edge = e;
             int a0 = mesh.edges[2 * e];
             int a1 = mesh.edges[2 * e + 1];
+            if (mesh.fixed(a0, a1)) {
+                continue; // a held edge meets moving ones from their side
+            }
             edgeHash.query(edgeBoxes[6 * e], edgeBoxes[6 * e + 1], edgeBoxes[6 * e + 2],
                     edgeBoxes[6 * e + 3], edgeBoxes[6 * e + 4], edgeBoxes[6 * e + 5], other -> {
-                    if (other <= edge) {
-                        return;
-                    }
                     int b0 = mesh.edges[2 * other];
                     int b1 = mesh.edges[2 * other + 1];
+                    // each pair once: from its lower edge, or from its moving edge when the other is held
+                    if (other == edge || (other < edge && !mesh.fixed(b0, b1))) {
+                        return;
+                    }
                     if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1 || !mesh.bodiesMayTouch(a0, b0)) {
                         return;
                     }
@@ -211,6 +217,9 @@ final class ContactCandidates {
         }
         if (mesh.hasGround) {
             for (int v = 0; v < mesh.vertices.length; v++) {
+                if (mesh.fixedNode[mesh.vertices[v]]) {
+                    continue;
+                }
                 int q = 3 * mesh.vertices[v] + 2;
                 double dz = p[q];
                 if (dz < 0) {

@@ -36,7 +36,8 @@ public final class CardsConfig {
                 gravity(j),
                 j.number("hashCell", 1e-5, 1.0),
                 SparseSpdSystem.Factorisation.valueOf(j.choice("factorisation", "supernodal", "qdldl").toUpperCase(java.util.Locale.ROOT)),
-                j.bool("parallel", false));
+                j.bool("parallel", false),
+                j.choice("contactHessian", "projected", "gaussNewton").equals("gaussNewton"));
         f.requireNoUnknownFields();
         j.requireNoUnknownFields();
         return s;

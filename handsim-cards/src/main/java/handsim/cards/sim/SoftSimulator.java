@@ -52,6 +52,7 @@ public final class SoftSimulator {
         this.settings = settings;
         this.bones = bones;
         this.contacts = new ContactSet(world.collision, settings.dhat(), settings.hashCell());
+        contacts.useGaussNewton(settings.gaussNewtonContacts());
         this.friction = new Friction(settings.frictionEpsV());
         this.potential = new IncrementalPotential(world, contacts, friction, settings.timeStep(), settings.parallel());
         this.system = new SparseSpdSystem(world.freeCount, settings.factorisation(), settings.parallel());

@@ -45,6 +45,9 @@ public final class SoftWorld {
         for (int i : b.bone) {
             dirichlet[i] = true;
         }
+        for (int i : b.fixed) {
+            dirichlet[i] = true;
+        }
         freeIndex = new int[n];
         int f = 0;
         for (int i = 0; i < n; i++) {
@@ -81,32 +84,55 @@ public final class SoftWorld {
         }
         tets = soft.isEmpty() ? null : new TetElasticity(tetArr, rest, tetMu, tetLambda);
         // cards: StVK membrane and hinge bending, lumped mass ρtA/3
-        int[] triArr = b.tris.stream().mapToInt(Integer::intValue).toArray();
-        int nf = triArr.length / 3;
+        // cards: StVK membrane and hinge bending, lumped mass ρtA/3; a fixed card's triangles and
+        // hinges have constant energy, and only their mass is kept
+        int[] allTris = b.tris.stream().mapToInt(Integer::intValue).toArray();
+        List<Integer> softTris = new ArrayList<>();
+        for (int t = 0; t < allTris.length / 3; t++) {
+            ShellMaterial m = b.triMaterial.get(t);
+            double area = triangleArea(rest, allTris[3 * t], allTris[3 * t + 1], allTris[3 * t + 2]);
+            for (int k = 0; k < 3; k++) {
+                mass[allTris[3 * t + k]] += m.density() * m.thickness() * area / 3;
+            }
+            if (anyFree(allTris, 3, t)) {
+                softTris.add(t);
+            }
+        }
+        int nf = softTris.size();
+        int[] triArr = new int[3 * nf];
         double[] young = new double[nf];
         double[] poisson = new double[nf];
         double[] thick = new double[nf];
-        for (int t = 0; t < nf; t++) {
+        for (int i = 0; i < nf; i++) {
+            int t = softTris.get(i);
+            System.arraycopy(allTris, 3 * t, triArr, 3 * i, 3);
             ShellMaterial m = b.triMaterial.get(t);
-            young[t] = m.young();
-            poisson[t] = m.poisson();
-            thick[t] = m.thickness();
-            double area = triangleArea(rest, triArr[3 * t], triArr[3 * t + 1], triArr[3 * t + 2]);
-            for (int k = 0; k < 3; k++) {
-                mass[triArr[3 * t + k]] += m.density() * m.thickness() * area / 3;
-            }
+            young[i] = m.young();
+            poisson[i] = m.poisson();
+            thick[i] = m.thickness();
         }
         membrane = nf == 0 ? null : new Membrane(triArr, rest, young, poisson, thick);
-        int[] hingeArr = b.hinges.stream().mapToInt(Integer::intValue).toArray();
-        bending = hingeArr.length == 0 ? null : new Bending(hingeArr, rest,
-                b.hingeStiffness.stream().mapToDouble(Double::doubleValue).toArray());
+        int[] allHinges = b.hinges.stream().mapToInt(Integer::intValue).toArray();
+        List<Integer> softHinges = new ArrayList<>();
+        for (int h = 0; h < allHinges.length / 4; h++) {
+            if (anyFree(allHinges, 4, h)) {
+                softHinges.add(h);
+            }
+        }
+        int[] hingeArr = new int[4 * softHinges.size()];
+        double[] hingeK = new double[softHinges.size()];
+        for (int i = 0; i < hingeK.length; i++) {
+            System.arraycopy(allHinges, 4 * softHinges.get(i), hingeArr, 4 * i, 4);
+            hingeK[i] = b.hingeStiffness.get(softHinges.get(i));
+        }
+        bending = hingeArr.length == 0 ? null : new Bending(hingeArr, rest, hingeK);
         collision = new CollisionMesh(
                 b.contactVertices.stream().mapToInt(Integer::intValue).toArray(),
                 b.contactEdges.stream().mapToInt(Integer::intValue).toArray(),
                 b.contactFaces.stream().mapToInt(Integer::intValue).toArray(),
                 b.bodyOfNode.stream().mapToInt(Integer::intValue).toArray(),
                 b.halfThickness.stream().mapToDouble(Double::doubleValue).toArray(),
-                toBooleans(b.selfContact), rest, toBooleans(b.isCard), b.friction, b.groundHeight);
+                toBooleans(b.selfContact), rest, toBooleans(b.isCard), b.friction, b.groundHeight, dirichlet);
         List<handsim.cards.energy.Energy> terms = new ArrayList<>();
         for (handsim.cards.energy.Energy term : new handsim.cards.energy.Energy[] {tets, membrane, bending}) {
             if (term != null) {
@@ -128,6 +154,16 @@ public final class SoftWorld {
             }
         }
         bboxDiagonal = Math.sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    }
+
+    /** Whether element e (k nodes each) has a node that is not Dirichlet. */
+    private boolean anyFree(int[] elems, int k, int e) {
+        for (int i = 0; i < k; i++) {
+            if (!dirichlet[elems[k * e + i]]) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private void couple(TreeSet<Long> pairs, int[] elems, int k) {
@@ -233,6 +269,7 @@ public final class SoftWorld {
         private final List<Double> nodes = new ArrayList<>();
         private final List<SoftBody> bodies = new ArrayList<>();
         private final List<Integer> bone = new ArrayList<>();
+        private final List<Integer> fixed = new ArrayList<>();
         private final List<int[]> boneGroups = new ArrayList<>();
         private final List<Integer> tets = new ArrayList<>();
         private final List<Double> tetMu = new ArrayList<>();
@@ -299,7 +336,7 @@ public final class SoftWorld {
             halfThickness.add(material.thickness() / 2);
             selfContact.add(true);
             isCard.add(true);
-            bodies.add(new SoftBody(name, SoftBody.Kind.CARD, first, mesh.vertexCount(), surface));
+            bodies.add(new SoftBody(name, SoftBody.Kind.CARD, first, mesh.vertexCount(), surface, material.thickness()));
             return this;
         }
 
@@ -346,7 +383,21 @@ public final class SoftWorld {
             halfThickness.add(0.0);
             selfContact.add(false);
             isCard.add(false);
-            bodies.add(new SoftBody(name, SoftBody.Kind.FINGERTIP, first, mesh.vertexCount(), surface));
+            bodies.add(new SoftBody(name, SoftBody.Kind.FINGERTIP, first, mesh.vertexCount(), surface, 0));
+            return this;
+        }
+
+        /**
+         * Holds every node of the body {@code name} where the state puts it (Dirichlet nodes that
+         * no bone moves): a card of a deck that lies still under what moves. Its elastic energy
+         * is constant and left out; it still touches what moves.
+         */
+        public Builder fix(String name) {
+            SoftBody body = bodies.stream().filter(x -> x.name().equals(name)).findFirst()
+                    .orElseThrow(() -> new IllegalArgumentException("no body named " + name));
+            for (int i = 0; i < body.nodeCount(); i++) {
+                fixed.add(body.firstNode() + i);
+            }
             return this;
         }
 

@@ -20,12 +20,16 @@ package handsim.cards.sim;
  * @param hashCell           spatial hash cell size (m)
  * @param factorisation      the sparse factorisation of the Newton system
  * @param parallel           assemble and factor on two threads (the result is bit-identical either way)
+ * @param gaussNewtonContacts each contact's Hessian is its Gauss–Newton part (positive
+ *                           semi-definite without an eigen-decomposition) instead of the projected
+ *                           full Hessian ({@link handsim.cards.contact.ContactSet#useGaussNewton})
  */
 public record SolverSettings(double timeStep, double dhat, double newtonTolerance, int maxNewtonIterations,
                              double cgTolerance, int cgMaxIterations,
                              double ccdRescaling, handsim.cards.contact.CollisionMesh.FrictionTable friction, double frictionEpsV, double kappaScale,
                              double[] gravity, double hashCell,
-                             handsim.cards.linalg.SparseSpdSystem.Factorisation factorisation, boolean parallel) {
+                             handsim.cards.linalg.SparseSpdSystem.Factorisation factorisation, boolean parallel,
+                             boolean gaussNewtonContacts) {
 
     public SolverSettings {
         gravity = gravity.clone();

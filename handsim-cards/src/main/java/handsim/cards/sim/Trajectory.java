@@ -18,8 +18,8 @@ import java.util.TreeSet;
  */
 public final class Trajectory {
 
-    /** A body's drawable surface: its kind, triangles over {@code nodes} (indices into it). */
-    public record Surface(String name, SoftBody.Kind kind, int[] nodes, int[] triangles) {
+    /** A body's drawable surface: its kind, triangles over {@code nodes} (indices into it), a card's thickness (m; 0 for a fingertip). */
+    public record Surface(String name, SoftBody.Kind kind, int[] nodes, int[] triangles, double thickness) {
     }
 
     /** One frame: time (s) and, per surface, its nodes' positions (3 per node). */
@@ -43,7 +43,7 @@ public final class Trajectory {
             for (int i = 0; i < tri.length; i++) {
                 local[i] = java.util.Arrays.binarySearch(nodes, tri[i]);
             }
-            out.add(new Surface(b.name(), b.kind(), nodes, local));
+            out.add(new Surface(b.name(), b.kind(), nodes, local, b.thickness()));
         }
         return new Trajectory(out);
     }
@@ -77,6 +77,7 @@ public final class Trajectory {
             ObjectNode o = ss.addObject();
             o.put("name", s.name());
             o.put("kind", s.kind().name());
+            o.put("thickness", s.thickness());
             ArrayNode nodes = o.putArray("nodes");
             for (int n : s.nodes()) {
                 nodes.add(n);
@@ -107,7 +108,7 @@ public final class Trajectory {
         List<Surface> surfaces = new ArrayList<>();
         for (Json s : root.array("surfaces")) {
             surfaces.add(new Surface(s.string("name"), SoftBody.Kind.valueOf(s.string("kind")),
-                    ints(s.get("nodes").node()), ints(s.get("triangles").node())));
+                    ints(s.get("nodes").node()), ints(s.get("triangles").node()), s.number("thickness", 0)));
         }
         Trajectory t = new Trajectory(surfaces);
         for (Json f : root.array("frames")) {

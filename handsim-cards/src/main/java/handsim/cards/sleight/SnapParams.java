@@ -1,6 +1,9 @@
 package handsim.cards.sleight;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
+import java.util.LinkedHashMap;
+import java.util.Map;
 
 /**
  * The decision variables of Card Snapping (thesis 4.2.4): the bones pinch in [t0, t1] (s) at
@@ -8,20 +11,25 @@ import handsim.config.Json;
  */
 public record SnapParams(double t0, double t1, double vp, double t2, double t3, double vs) {
 
-    /**
-     * The fastest mean bone speed of a trial (m/s): a fingertip flicked as fast as a hand can
-     * moves at about 2 m/s, and even that crosses the card's width (63.5 mm) in 0.03 s, three
-     * time steps; the searched pinches and slides stay below 0.012 m/s.
-     */
-    public static final double MAX_SPEED = 2;
+    /** The fastest mean bone speed of a trial (m/s), {@link BoneWindows#MAX_SPEED}. */
+    public static final double MAX_SPEED = BoneWindows.MAX_SPEED;
 
     /** Reads {@code {"t0": …, "t1": …, "vp": …, "t2": …, "t3": …, "vs": …}} (a "comment" is allowed). */
     public static SnapParams parse(Json j) {
         j.allow("comment");
-        SnapParams p = new SnapParams(j.number("t0"), j.number("t1"), j.number("vp"), j.number("t2"), j.number("t3"), j.number("vs"));
+        SnapParams p = of(BoneWindows.parse(j));
         j.requireNoUnknownFields();
         p.validate(Double.POSITIVE_INFINITY, j.source());
         return p;
+    }
+
+    static SnapParams of(BoneWindows w) {
+        return new SnapParams(w.t0(), w.t1(), w.vp(), w.t2(), w.t3(), w.vs());
+    }
+
+    /** The pinch and the slide as motion windows. */
+    public BoneWindows windows() {
+        return new BoneWindows(t0, t1, vp, t2, t3, vs);
     }
 
     /**
@@ -29,31 +37,20 @@ public record SnapParams(double t0, double t1, double vp, double t2, double t3, 
      * message names the offending field and value.
      */
     public void validate(double duration, String source) {
-        String where = source == null ? "" : source + ": ";
-        check(t0 >= 0, where + "t0 must be >= 0, got " + t0);
-        check(t1 > t0, where + "t1 must be > t0 = " + t0 + ", got " + t1);
-        check(t2 >= t1, where + "t2 must be >= t1 = " + t1 + ", got " + t2);
-        check(t3 > t2, where + "t3 must be > t2 = " + t2 + ", got " + t3);
-        check(t3 <= duration, where + "t3 must be <= the trial duration " + duration + ", got " + t3);
-        check(vp >= 0 && vp <= MAX_SPEED, where + "vp must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vp));
-        check(vs >= 0 && vs <= MAX_SPEED, where + "vs must be a speed in [0, " + Json.show(MAX_SPEED) + "] m/s, got " + Json.show(vs));
-    }
-
-    private static void check(boolean ok, String message) {
-        if (!ok) {
-            throw new IllegalArgumentException(message);
-        }
+        windows().validate(duration, source);
     }
 
     /** As a JSON object. */
-    public com.fasterxml.jackson.databind.node.ObjectNode toJson() {
-        com.fasterxml.jackson.databind.node.ObjectNode o = Json.mapper().createObjectNode();
-        o.put("t0", t0);
-        o.put("t1", t1);
-        o.put("vp", vp);
-        o.put("t2", t2);
-        o.put("t3", t3);
-        o.put("vs", vs);
+    public ObjectNode toJson() {
+        ObjectNode o = Json.mapper().createObjectNode();
+        byName().forEach(o::put);
         return o;
+    }
+
+    /** The parameters by name, as a study has them. */
+    public Map<String, Double> byName() {
+        Map<String, Double> m = new LinkedHashMap<>();
+        windows().putInto(m);
+        return m;
     }
 }

@@ -1,7 +1,5 @@
 package handsim.cards.sleight;
 
-import handsim.cards.mesh.CardMesher;
-import handsim.cards.mesh.FingertipMesher;
 import handsim.cards.mesh.TetMesh;
 import handsim.cards.mesh.ShellMesh;
 import handsim.cards.sim.BoneMotion;
@@ -39,18 +37,14 @@ public final class SnapScene {
 
     public SnapScene(SnapConfig config, Materials materials, SolverSettings settings) {
         this.config = config;
-        boolean[] rounded = new boolean[4];
-        for (int i = 0; i < config.roundedCorners(); i++) {
-            rounded[i] = true;
-        }
-        ShellMesh card = CardMesher.generate(config.cardLength(), config.cardWidth(), config.cellsLong(), config.cellsShort(), rounded);
-        double[] a = config.semiAxes();
-        int[] g = config.grid();
-        TetMesh tip = FingertipMesher.generate(a[0], a[1], a[2], g[0], g[1], g[2], config.softLayers());
+        CardSpec cardSpec = config.card();
+        ShellMesh card = cardSpec.mesh();
+        double[] a = config.fingertip().semiAxes();
+        TetMesh tip = config.fingertip().mesh();
         double t = materials.card().thickness();
-        double spacing = t * (1 + config.gapFraction());
+        double spacing = t * (1 + cardSpec.gapFraction());
         double tipY = spacing / 2 + t / 2 + a[2] + config.initialGap();
-        double tipZ = config.cardLength() / 2 - config.pinchBelowTop();
+        double tipZ = cardSpec.length() / 2 - config.pinchBelowTop();
         world = new SoftWorld.Builder()
                 .friction(settings.friction())
                 .card("card0", card, materials.card(), new Placement(ROTATION, new double[] {0, -spacing / 2, 0}))
@@ -63,9 +57,9 @@ public final class SnapScene {
         List<Integer> top = new ArrayList<>();
         List<Integer> bottom = new ArrayList<>();
         for (int i = 0; i < card.vertexCount(); i++) {
-            if (Math.abs(v[3 * i] - config.cardLength() / 2) < 1e-9) {
+            if (Math.abs(v[3 * i] - config.card().length() / 2) < 1e-9) {
                 top.add(i);
-            } else if (Math.abs(v[3 * i] + config.cardLength() / 2) < 1e-9) {
+            } else if (Math.abs(v[3 * i] + config.card().length() / 2) < 1e-9) {
                 bottom.add(i);
             }
         }
@@ -92,27 +86,17 @@ public final class SnapScene {
     public BoneMotion motion(SnapParams p) {
         double w = config.warmup();
         double depth = config.holdDepth();
+        BoneWindows windows = p == null ? null : p.windows();
         return (finger, time, out) -> {
             double sign = finger == 0 ? 1 : -1;
-            double hold = depth * ease(time, 0, 0.5 * w);
+            double hold = depth * BoneWindows.ease(time, 0, 0.5 * w);
             double tt = time - w;
-            double pinch = p == null ? 0 : p.vp() * (p.t1() - p.t0()) * ease(tt, p.t0(), p.t1());
-            double slide = p == null ? 0 : p.vs() * (p.t3() - p.t2()) * ease(tt, p.t2(), p.t3());
+            double pinch = windows == null ? 0 : windows.pinch(tt);
+            double slide = windows == null ? 0 : windows.second(tt);
             out[0] = -sign * slide;
             out[1] = sign * (hold + pinch);
             out[2] = 0;
         };
-    }
-
-    /** Half-cosine ease from 0 at a to 1 at b (mean slope 1/(b − a)); a step at a if b ≤ a. */
-    public static double ease(double t, double a, double b) {
-        if (t <= a) {
-            return 0;
-        }
-        if (t >= b) {
-            return 1;
-        }
-        return 0.5 * (1 - Math.cos(Math.PI * (t - a) / (b - a)));
     }
 
     /** Unit long axis of card c (bottom-edge midpoint to top-edge midpoint). */

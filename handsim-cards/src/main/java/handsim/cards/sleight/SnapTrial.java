@@ -6,8 +6,10 @@ import handsim.cards.sim.CardsConfig.Materials;
 import handsim.cards.sim.SimState;
 import handsim.cards.sim.SoftSimulator;
 import handsim.cards.sim.SolverSettings;
-import handsim.cards.sim.StepStats;
+import handsim.cards.sim.SoftWorld;
 import handsim.cards.sim.TrialBudget;
+import handsim.cards.study.StudyConfig;
+import handsim.config.ConfigException;
 import handsim.config.Json;
 import java.nio.file.Path;
 import java.util.List;
@@ -23,7 +25,7 @@ import java.util.Map;
  * builds its own simulator. A simulation past its {@link TrialBudget} throws
  * {@link handsim.cards.contact.BudgetExceeded}.
  */
-public final class SnapTrial {
+public final class SnapTrial implements CardSleight {
 
     private final SnapScene scene;
     private final SolverSettings settings;
@@ -41,7 +43,7 @@ public final class SnapTrial {
         this(config, materials, settings, budget, Json.mapper().createObjectNode());
     }
 
-    private SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget, ObjectNode inputs) {
+    SnapTrial(SnapConfig config, Materials materials, SolverSettings settings, TrialBudget budget, ObjectNode inputs) {
         this.scene = new SnapScene(config, materials, settings);
         this.settings = settings;
         this.budget = budget;
@@ -62,35 +64,7 @@ public final class SnapTrial {
      * "false"} (values in JSON; files snap, materials, solver, budget).
      */
     public static SnapTrial fromConfigs(Path home, String mesh, String cardPreset, Map<String, String> overrides) {
-        Path dir = home.resolve("configs/cards");
-        Map<String, Map<String, String>> byFile = new java.util.LinkedHashMap<>();
-        for (String file : List.of("snap", "materials", "solver", "budget")) {
-            byFile.put(file, new java.util.LinkedHashMap<>());
-        }
-        overrides.forEach((key, value) -> {
-            int dot = key.indexOf('.');
-            Map<String, String> target = dot < 0 ? null : byFile.get(key.substring(0, dot));
-            if (target == null) {
-                throw new IllegalArgumentException("--set " + key + ": the key must start with snap., materials., solver. or budget.");
-            }
-            target.put(key.substring(dot + 1), value);
-        });
-        Json snap = Json.load(dir.resolve("snap.json"), byFile.get("snap"));
-        Json materialsFile = Json.load(dir.resolve("materials.json"), byFile.get("materials"));
-        Json solverFile = Json.load(dir.resolve("solver.json"), byFile.get("solver"));
-        Json budgetFile = Json.load(dir.resolve("budget.json"), byFile.get("budget"));
-        SnapConfig config = SnapConfig.parse(snap, mesh);
-        Materials materials = CardsConfig.materials(materialsFile, cardPreset);
-        ObjectNode inputs = Json.mapper().createObjectNode();
-        inputs.put("sleight", "snap");
-        inputs.put("mesh", config.meshName());
-        inputs.put("card", materials.cardPreset());
-        inputs.set("snap", snap.node().deepCopy());
-        inputs.set("materials", materialsFile.node().deepCopy());
-        inputs.set("solver", solverFile.node().deepCopy());
-        TrialBudget budget = TrialBudget.parse(budgetFile);
-        inputs.set("budget", budget.toJson());
-        return new SnapTrial(config, materials, CardsConfig.solver(solverFile), budget, inputs);
+        return (SnapTrial) Sleights.fromConfigs("snap", home, mesh, cardPreset, overrides, null);
     }
 
     /**
@@ -98,6 +72,7 @@ public final class SnapTrial {
      * preset, snap.json (with any overrides), materials.json and solver.json as read, and the
      * budget; empty for a trial built from records.
      */
+    @Override
     public ObjectNode inputs() {
         return inputs.deepCopy();
     }
@@ -115,11 +90,6 @@ public final class SnapTrial {
         return budget;
     }
 
-    /** Receives the state after every step of a trial (for recording frames). */
-    public interface StepListener {
-        void afterStep(SimState state, StepStats step);
-    }
-
     /** The rested hold every trial starts from (simulated on first use). */
     public synchronized SimState heldState() {
         if (held == null) {
@@ -127,7 +97,7 @@ public final class SnapTrial {
             double warmup = scene.config().warmup();
             // gravity ramps on over the second half of the warm-up, once the bones hold the cards
             SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(null))
-                    .withGravityScale(t -> SnapScene.ease(t, 0.5 * warmup, warmup)).withBudget(budget, warmup);
+                    .withGravityScale(t -> BoneWindows.ease(t, 0.5 * warmup, warmup)).withBudget(budget, warmup);
             int steps = (int) Math.round(scene.config().warmup() / settings.timeStep());
             for (int i = 0; i < steps; i++) {
                 sim.step(s);
@@ -141,30 +111,97 @@ public final class SnapTrial {
         return run(params, null);
     }
 
-    public SnapResult run(SnapParams params, StepListener listener) {
+    public SnapResult run(SnapParams params, TrialCost.StepListener listener) {
         SnapConfig c = scene.config();
         params.validate(c.duration(), null);
         SimState state = heldState();
         SoftSimulator sim = new SoftSimulator(scene.world(), settings, scene.motion(params)).withBudget(budget, c.duration());
         int steps = (int) Math.round(c.duration() / settings.timeStep());
-        long start = System.nanoTime();
-        double minGap = Double.POSITIVE_INFINITY;
-        for (int i = 0; i < steps; i++) {
-            StepStats st = sim.step(state);
-            minGap = Math.min(minGap, st.minGap);
-            if (listener != null) {
-                listener.afterStep(state, st);
-            }
-        }
-        double wall = (System.nanoTime() - start) * 1e-9;
-        StepStats total = sim.stats();
+        TrialCost cost = TrialCost.simulate(sim, state, steps, settings.timeStep(), listener);
         double alpha = scene.angleBetweenCards(state);
         double drop = scene.cardDrop(heldState(), state);
         // a card that fell out of the fingers was not snapped: the largest error, whatever its angle
         boolean held = drop <= c.dropLimit();
         double objective = held ? Math.abs(c.alphaTargetDegrees() - alpha) : c.droppedObjective();
-        return new SnapResult(alpha, objective, minGap, total.steps,
-                total.newtonIterations, steps * settings.timeStep(), wall, total.assemblyNanos * 1e-9,
-                total.contactNanos * 1e-9, total.solveNanos * 1e-9, total.maxContacts, drop, held);
+        return new SnapResult(alpha, objective, drop, held, cost);
+    }
+
+    @Override
+    public String name() {
+        return "snap";
+    }
+
+    @Override
+    public String title() {
+        return "Card Snapping";
+    }
+
+    @Override
+    public SoftWorld world() {
+        return scene.world();
+    }
+
+    @Override
+    public String meshName() {
+        return scene.config().meshName();
+    }
+
+    @Override
+    public List<String> paramNames() {
+        return BoneWindows.NAMES;
+    }
+
+    @Override
+    public Map<String, Double> defaults() {
+        return scene.config().defaults().byName();
+    }
+
+    @Override
+    public Map<String, Double> parseParams(Json j) {
+        SnapParams p = SnapParams.parse(j);
+        p.validate(scene.config().duration(), j.source());
+        return p.byName();
+    }
+
+    @Override
+    public SimState startState(Map<String, Double> params) {
+        return heldState();
+    }
+
+    @Override
+    public int frameEvery() {
+        return scene.config().frameEvery();
+    }
+
+    /**
+     * Card Snapping minimises |α_target − α_end| in degrees (a dropped card scores the largest
+     * error); the end angle, the card drop and whether the cards were held are kept as figures.
+     */
+    @Override
+    public Outcome run(Map<String, Double> params, TrialCost.StepListener listener) {
+        SnapResult r = run(SnapParams.of(BoneWindows.of(params)), listener);
+        Map<String, Double> figures = new java.util.LinkedHashMap<>();
+        figures.put("alphaEnd", r.alphaEnd());
+        figures.put("cardDrop", r.cardDrop());
+        figures.put("held", r.held() ? 1.0 : 0.0);
+        SnapConfig c = scene.config();
+        List<String> report = List.of(
+                String.format(java.util.Locale.ROOT, "alpha_end   %.3f deg (target %s)", r.alphaEnd(), Json.show(c.alphaTargetDegrees())),
+                String.format(java.util.Locale.ROOT, "objective   %.3f deg", r.objective()),
+                String.format(java.util.Locale.ROOT, "card drop   %.2f mm below the hold at the end (%s)", 1e3 * r.cardDrop(),
+                        r.held() ? "held" : "DROPPED: no snap"));
+        return new Outcome(new double[] {r.objective()}, figures, r.cost(), report);
+    }
+
+    /**
+     * One objective, the six window parameters (linear floats) whose windows cannot overlap, t3
+     * within the trial (thesis 4.2.4).
+     */
+    @Override
+    public void checkSearchSpace(StudyConfig c, String source) {
+        if (c.objectives().size() != 1) {
+            throw new ConfigException(source + ": objectives: Card Snapping has one objective, got " + c.objectives());
+        }
+        BoneWindows.checkSearchSpace(c, paramNames(), scene.config().duration(), title(), source);
     }
 }

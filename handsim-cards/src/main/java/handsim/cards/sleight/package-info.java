@@ -1,8 +1,12 @@
 /**
- * Card sleights as functions of their bone trajectories: Card Snapping (thesis 4.2.4), its scene,
- * parameters, {@link handsim.cards.sleight.SnapTrial#run}, the entry point an optimiser calls, and
- * {@link handsim.cards.sleight.SnapStudy}, the trial as a study's objective
- * ({@link handsim.cards.sleight.SnapObjective}: in the form that travels to a cluster).
+ * Card sleights as functions of their bone trajectories ({@link handsim.cards.sleight.CardSleight},
+ * built by name in {@link handsim.cards.sleight.Sleights}): Card Snapping (thesis 4.2.4,
+ * {@link handsim.cards.sleight.SnapTrial}) and Double Lift (4.2.5, {@link
+ * handsim.cards.sleight.LiftTrial}, its rested stack kept by {@link
+ * handsim.cards.sleight.StackCheckpoint}), with what they share: the card and fingertip specs,
+ * the pinch-then-move windows ({@link handsim.cards.sleight.BoneWindows}), the configs as read
+ * and a trial's cost ({@link handsim.cards.sleight.TrialCost}); a sleight as a study's objective in
+ * the form that travels to a cluster ({@link handsim.cards.sleight.SleightObjective}).
  *
  * <p>Imports the other card packages, {@code handsim.config} and {@code handsim.report} at most;
  * nothing else of handsim.

@@ -73,6 +73,8 @@ public final class Study {
     private final long seed;
     private final TpeSampler sampler;
     private final ObjectNode studyJson;
+    private double displayScale = 1;
+    private String displayUnit = "";
     /** Finished trials (complete or failed) by number. */
     private final TreeMap<Integer, TrialRecord> finished = new TreeMap<>();
     /** Whether study.json records this run already ({@link #recordRun}). */
@@ -178,7 +180,8 @@ public final class Study {
     private static ObjectNode samplerDescription(StudyConfig config) {
         ObjectNode s = Json.mapper().createObjectNode();
         s.put("algorithm", config.multiObjective() ? "MOTPE (Ozaki et al. 2020)" : "TPE (Bergstra et al. 2011)");
-        s.put("semantics", "Optuna 3.6.1 TPESampler, independent sampling (multivariate=False)");
+        s.put("semantics", config.sampler().multivariate() ? "Optuna 3.6.1 TPESampler, multivariate=True"
+                : "Optuna 3.6.1 TPESampler, independent sampling (multivariate=False)");
         s.put("gamma", "min(ceil(0.1 n), 25)");
         s.put("weights", "1 below 25 trials; the oldest n - 25 ramp from 1/n to 1");
         s.put("trialRandom", "trial k: SplittableRandom seeded with the (k+1)-th nextLong of SplittableRandom(seed)");
@@ -213,6 +216,29 @@ public final class Study {
                 .min(Comparator.comparingDouble((TrialRecord t) -> d == Direction.MAXIMIZE ? -t.values()[0] : t.values()[0]));
     }
 
+    /**
+     * The trial a study reports: among the complete trials (the Pareto front when there are
+     * several objectives), the one closest to zero with each objective scaled by its tolerance
+     * (unscaled where it has none), the earliest of equals; for one objective without a
+     * tolerance, the best.
+     */
+    public Optional<TrialRecord> chosen() {
+        if (!config.multiObjective() && !config.hasTolerance(0)) {
+            return best();
+        }
+        List<TrialRecord> candidates = config.multiObjective() ? paretoFront()
+                : finished.values().stream().filter(TrialRecord::isComplete).toList();
+        return candidates.stream().min(Comparator.comparingDouble(t -> norm(config.scaled(t.values()))));
+    }
+
+    private static double norm(double[] v) {
+        double s = 0;
+        for (double x : v) {
+            s += x * x;
+        }
+        return Math.sqrt(s);
+    }
+
     /** The complete trials no other one dominates, in number order. */
     public List<TrialRecord> paretoFront() {
         List<CompletedTrial> complete = finished.values().stream().filter(TrialRecord::isComplete).map(TrialRecord::toCompleted).toList();
@@ -220,11 +246,8 @@ public final class Study {
     }
 
     /**
-     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads,
-     * with a progress line per finished trial on {@code progress} (null for none). Writes each
-     * trial's file as it finishes, best.json after each, the history plots at the end. If the
-     * calling thread is interrupted, the running trials are abandoned (they run again on
-     * resume), the report is written and InterruptedException is thrown.
+     * Runs trials until trials 0 … nTrials - 1 have all finished, on {@code workers} threads of
+     * this JVM ({@link ThreadTrials}); see {@link #run(TrialExecutor, int, PrintStream)}.
      */
     public void run(Objective objective, int nTrials, int workers, PrintStream progress) throws IOException, InterruptedException {
         if (workers < 1) {
@@ -354,10 +377,23 @@ public final class Study {
         return dir.resolve(TRIALS_DIR).resolve(String.format(Locale.ROOT, "trial-%04d.json", number));
     }
 
-    /** best.json and the history plots. */
+    /**
+     * Figures show the objectives multiplied by {@code scale} and labelled with {@code unit} (say
+     * 1000 and "mm" for objectives in metres); by default as they are.
+     */
+    public Study displayObjectives(double scale, String unit) {
+        this.displayScale = scale;
+        this.displayUnit = unit;
+        return this;
+    }
+
+    /** best.json, the history plots and, for several objectives, the Pareto front (pareto.png). */
     public void writeReport() throws IOException {
         writeBest();
         HistoryPlot.write(this);
+        if (config.multiObjective() && finished.values().stream().anyMatch(TrialRecord::isComplete)) {
+            ParetoPlot.write(this, displayScale, displayUnit);
+        }
     }
 
     private void writeBest() throws IOException {
@@ -372,6 +408,7 @@ public final class Study {
         } else {
             best().ifPresent(t -> root.set("best", t.toJson(config)));
         }
+        chosen().ifPresent(t -> root.set("chosen", t.toJson(config).put("meetsTolerances", config.meets(t.values()))));
         writeJson(dir.resolve(BEST_FILE), root);
     }
 

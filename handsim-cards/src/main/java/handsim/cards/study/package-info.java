@@ -5,7 +5,8 @@
  * suggests trials with {@code handsim.cards.tpe}, runs them on worker threads or a cluster's
  * executors ({@link handsim.cards.study.TrialExecutor}, {@link handsim.cards.study.RemoteTrials})
  * with results that depend on neither, keeps one JSON file per trial, resumes after a kill,
- * prints progress with an ETA and draws the optimisation history (thesis Fig. 4.9).
+ * prints progress with an ETA and draws the optimisation history (thesis Fig. 4.9) and, for
+ * several objectives, the Pareto front (Fig. 4.11).
  *
  * <p>A command runs one in a few lines:
  * <pre>

@@ -57,6 +57,16 @@ final class ParzenEstimator {
      * unnormalised weights.
      */
     static ParzenEstimator fit(double[] observations, double[] observationWeights, Param param, TpeSettings settings) {
+        return fit(observations, observationWeights, param, settings, 0);
+    }
+
+    /**
+     * As {@link #fit(double[], double[], Param, TpeSettings)}; with {@code dimensions} > 0 this is
+     * one dimension of multivariate TPE over that many parameters (Optuna's multivariate=True):
+     * every observation's kernel has the same bandwidth 0.2 n^(−1/(dimensions + 4)) · range
+     * (Scott's rule), then the magic clip.
+     */
+    static ParzenEstimator fit(double[] observations, double[] observationWeights, Param param, TpeSettings settings, int dimensions) {
         int n = observations.length;
         if (observationWeights.length != n) {
             throw new IllegalArgumentException(n + " observations but " + observationWeights.length + " weights");
@@ -98,6 +108,9 @@ final class ParzenEstimator {
             sorted[0] = ends[2] - ends[1];
             sorted[sorted.length - 1] = ends[ends.length - 2] - ends[ends.length - 3];
         }
+        if (dimensions > 0) {
+            Arrays.fill(sorted, 0.2 * Math.pow(Math.max(n, 1), -1.0 / (dimensions + 4)) * range);
+        }
         double maxSigma = 1.0 * range;
         double minSigma = settings.considerMagicClip() ? 1.0 * range / Math.min(100.0, 1.0 + n + (prior ? 1 : 0)) : EPS;
         double[] sigmas = new double[mus.length];
@@ -133,11 +146,21 @@ final class ParzenEstimator {
 
     /** A draw (internal coordinate): a kernel by weight, then its truncated normal, on the grid if discrete. */
     double sample(SplittableRandom rng) {
+        return sampleKernel(kernel(rng), rng);
+    }
+
+    /** A kernel drawn by weight. */
+    int kernel(SplittableRandom rng) {
         double u = rng.nextDouble(), cumulative = 0;
         int k = 0;
         while (k < weights.length - 1 && (cumulative += weights[k]) <= u) {
             k++;
         }
+        return k;
+    }
+
+    /** A draw from kernel k's truncated normal (internal coordinate), on the grid if discrete. */
+    double sampleKernel(int k, SplittableRandom rng) {
         double x = mus[k] + sigmas[k] * TruncatedNormal.sample(a(k), b(k), rng);
         if (step > 0) {
             x = Math.min(Math.max(low + Math.rint((x - low) / step) * step, low), high);
@@ -166,7 +189,12 @@ final class ParzenEstimator {
         return Math.log(sum) + max;
     }
 
-    private double kernelLogPdf(int k, double x) {
+    int kernelCount() {
+        return mus.length;
+    }
+
+    /** Kernel k's log density at x (internal coordinate; log mass of x's cell if discrete). */
+    double kernelLogPdf(int k, double x) {
         if (step == 0) {
             return TruncatedNormal.logPdf(x, a(k), b(k), mus[k], sigmas[k], logMass[k], logSigma[k]);
         }

@@ -6,8 +6,9 @@ import java.util.SplittableRandom;
 
 /**
  * The Tree-structured Parzen Estimator (Bergstra et al. 2011) and, for several objectives,
- * MOTPE (Ozaki et al. 2020), with the semantics of Optuna 3.6.1's {@code TPESampler} in its
- * default, independent (multivariate=False) mode, for float and integer parameters.
+ * MOTPE (Ozaki et al. 2020), with the semantics of Optuna 3.6.1's {@code TPESampler}, for float
+ * and integer parameters, in its default independent mode (multivariate=False) or, with
+ * {@link TpeSettings#multivariate()}, its multivariate one ({@link JointEstimator}).
  *
  * <p>A suggestion, given the finished trials:
  * <ol>
@@ -71,6 +72,9 @@ public final class TpeSampler {
             return out;
         }
         Estimators model = fit(history);
+        if (settings.multivariate()) {
+            return model.bestJoint(rng);
+        }
         for (int i = 0; i < out.length; i++) {
             double[] candidates = new double[settings.nEiCandidates()];
             for (int c = 0; c < candidates.length; c++) {
@@ -110,9 +114,10 @@ public final class TpeSampler {
         double[] belowWeights = directions.size() > 1 ? TrialSplit.hypervolumeWeights(split.below(), directions) : defaultWeights(split.below().size());
         double[] aboveWeights = defaultWeights(split.above().size());
         ParzenEstimator[] below = new ParzenEstimator[space.size()], above = new ParzenEstimator[space.size()];
+        int dimensions = settings.multivariate() ? space.size() : 0;
         for (int i = 0; i < space.size(); i++) {
-            below[i] = ParzenEstimator.fit(internal(split.below(), i), belowWeights, space.get(i), settings);
-            above[i] = ParzenEstimator.fit(internal(split.above(), i), aboveWeights, space.get(i), settings);
+            below[i] = ParzenEstimator.fit(internal(split.below(), i), belowWeights, space.get(i), settings, dimensions);
+            above[i] = ParzenEstimator.fit(internal(split.above(), i), aboveWeights, space.get(i), settings, dimensions);
         }
         return new Estimators(split, below, above);
     }
@@ -141,6 +146,52 @@ public final class TpeSampler {
         double acquisition(int i, double value) {
             double x = space.get(i).toInternal(value);
             return below[i].logPdf(x) - above[i].logPdf(x);
+        }
+
+        /**
+         * Multivariate TPE's suggestion: {@code nEiCandidates} whole points drawn from the joint
+         * l(x), the one of largest joint log l(x) − log g(x) (the first of equals), in the
+         * parameters' own units.
+         */
+        double[] bestJoint(SplittableRandom rng) {
+            JointEstimator l = new JointEstimator(below);
+            double[][] candidates = new double[settings.nEiCandidates()][];
+            for (int c = 0; c < candidates.length; c++) {
+                double[] drawn = l.sample(rng);
+                candidates[c] = new double[drawn.length];
+                for (int i = 0; i < drawn.length; i++) {
+                    candidates[c][i] = space.get(i).fromInternal(drawn[i]);
+                }
+            }
+            return chooseJoint(candidates);
+        }
+
+        /** The candidate (own units) of largest joint log l(x) − log g(x), evaluated after rounding to the grid as Optuna does; the first of equals. */
+        double[] chooseJoint(double[][] candidates) {
+            double[] best = null;
+            double bestValue = Double.NEGATIVE_INFINITY;
+            for (double[] values : candidates) {
+                double a = jointAcquisition(values);
+                if (a > bestValue || best == null) {
+                    best = values;
+                    bestValue = a;
+                }
+            }
+            return best.clone();
+        }
+
+        /** Joint log l(x) − log g(x) at a point in the parameters' own units. */
+        double jointAcquisition(double[] values) {
+            return jointLogPdf(true, values) - jointLogPdf(false, values);
+        }
+
+        /** Joint log l(x) (below) or log g(x) at a point in the parameters' own units. */
+        double jointLogPdf(boolean ofBelow, double[] values) {
+            double[] x = new double[values.length];
+            for (int i = 0; i < x.length; i++) {
+                x[i] = space.get(i).toInternal(values[i]);
+            }
+            return new JointEstimator(ofBelow ? below : above).logPdf(x);
         }
 
         /** The candidate of largest acquisition, the first of equals. */

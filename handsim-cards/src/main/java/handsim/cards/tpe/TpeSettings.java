@@ -11,12 +11,21 @@ package handsim.cards.tpe;
  * @param priorWeight       the prior kernel's weight (> 0)
  * @param considerMagicClip whether bandwidths have a lower bound of range / min(100, 1 + n + prior)
  * @param considerEndpoints whether the first and last kernels' bandwidths also see the domain's ends
+ * @param multivariate      multivariate TPE: one joint estimator over all parameters, kernels of
+ *                          Scott's bandwidth, candidates drawn and compared as whole points
+ *                          (Optuna's {@code multivariate=True}); else one estimator per parameter
  */
 public record TpeSettings(int nStartupTrials, int nEiCandidates, boolean considerPrior, double priorWeight,
-        boolean considerMagicClip, boolean considerEndpoints) {
+        boolean considerMagicClip, boolean considerEndpoints, boolean multivariate) {
 
-    /** Optuna 3.6.1's defaults: 10 start-up trials, 24 candidates, prior of weight 1, magic clip, no endpoints. */
-    public static final TpeSettings OPTUNA_DEFAULTS = new TpeSettings(10, 24, true, 1.0, true, false);
+    /** Optuna 3.6.1's defaults: 10 start-up trials, 24 candidates, prior of weight 1, magic clip, no endpoints, independent. */
+    public static final TpeSettings OPTUNA_DEFAULTS = new TpeSettings(10, 24, true, 1.0, true, false, false);
+
+    /** Independent (multivariate=False) settings. */
+    public TpeSettings(int nStartupTrials, int nEiCandidates, boolean considerPrior, double priorWeight,
+            boolean considerMagicClip, boolean considerEndpoints) {
+        this(nStartupTrials, nEiCandidates, considerPrior, priorWeight, considerMagicClip, considerEndpoints, false);
+    }
 
     public TpeSettings {
         if (nStartupTrials < 0) {

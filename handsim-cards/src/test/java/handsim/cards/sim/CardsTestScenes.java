@@ -24,12 +24,12 @@ final class CardsTestScenes {
 
     static SolverSettings withGravity(SolverSettings s, double gz) {
         return new SolverSettings(s.timeStep(), s.dhat(), s.newtonTolerance(), s.maxNewtonIterations(), s.cgTolerance(), s.cgMaxIterations(), s.ccdRescaling(),
-                s.friction(), s.frictionEpsV(), s.kappaScale(), new double[] {0, 0, gz}, s.hashCell(), s.factorisation(), s.parallel());
+                s.friction(), s.frictionEpsV(), s.kappaScale(), new double[] {0, 0, gz}, s.hashCell(), s.factorisation(), s.parallel(), s.gaussNewtonContacts());
     }
 
     static SolverSettings withParallel(SolverSettings s, boolean parallel) {
         return new SolverSettings(s.timeStep(), s.dhat(), s.newtonTolerance(), s.maxNewtonIterations(), s.cgTolerance(), s.cgMaxIterations(), s.ccdRescaling(),
-                s.friction(), s.frictionEpsV(), s.kappaScale(), s.gravity(), s.hashCell(), s.factorisation(), parallel);
+                s.friction(), s.frictionEpsV(), s.kappaScale(), s.gravity(), s.hashCell(), s.factorisation(), parallel, s.gaussNewtonContacts());
     }
 
     /** A flat PES card {@code height} above a ground plane at z = 0. */

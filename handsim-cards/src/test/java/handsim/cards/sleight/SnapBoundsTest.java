@@ -52,7 +52,8 @@ class SnapBoundsTest {
                             {"name": "t3", "low": 0.3, "high": 0.45}, {"name": "vs", "low": 0.002, "high": 1e6}],
                  "parallelTrials": 1}
                 """));
-        ConfigException e = assertThrows(ConfigException.class, () -> SnapStudy.check(c, 0.6, "space.json"));
+        SnapTrial trial = SnapTrial.fromConfigs(Path.of(""), "coarse", null);
+        ConfigException e = assertThrows(ConfigException.class, () -> trial.checkSearchSpace(c, "space.json"));
         assertEquals("space.json: params: vs's high must be <= 2.0 m/s (a flick of the finger), got 1000000.0", e.getMessage());
     }
 }

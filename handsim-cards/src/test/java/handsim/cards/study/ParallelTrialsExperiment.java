@@ -12,12 +12,12 @@ import java.util.stream.Stream;
 /**
  * What parallel trials cost a TPE study in sample efficiency, on a cheap objective: studies of
  * Hartmann's 6-D function (6 parameters in [0, 1], as Card Snapping searches 6; minimum
- * -3.32237) with parallelTrials P = 1, 2, 4, 8, each over seeds 1..S, through {@link Study} and
+ * -3.32237) with parallelTrials P = 1, 2, 4, 8 (or the list given), each over seeds 1..S, through {@link Study} and
  * its rule (trial k suggested from the trials numbered up to k - P). Prints, per P, the median
  * and mean regret (value - minimum) of the best trial after n trials, and how many trials the
  * median study needs to come within a regret. Run by scripts/tpe-parallel.
  *
- * <pre>java ... handsim.cards.study.ParallelTrialsExperiment SEEDS TRIALS</pre>
+ * <pre>java ... handsim.cards.study.ParallelTrialsExperiment SEEDS TRIALS [P,P,...]</pre>
  */
 public final class ParallelTrialsExperiment {
 
@@ -75,6 +75,7 @@ public final class ParallelTrialsExperiment {
     public static void main(String[] args) throws Exception {
         int seeds = Integer.parseInt(args[0]);
         int trials = Integer.parseInt(args[1]);
+        int[] batches = args.length > 2 ? Arrays.stream(args[2].split(",")).mapToInt(Integer::parseInt).toArray() : new int[] {1, 2, 4, 8};
         int[] ns = Arrays.stream(new int[] {10, 25, 50, 89, 150, 297}).filter(n -> n <= trials).toArray();
         double[] within = {1.0, 0.5, 0.25};
         Path tmp = Files.createTempDirectory("tpe-parallel");
@@ -87,7 +88,7 @@ public final class ParallelTrialsExperiment {
         }
         System.out.println(head);
         System.out.println("|---".repeat(1 + ns.length + within.length) + "|");
-        for (int parallel : new int[] {1, 2, 4, 8}) {
+        for (int parallel : batches) {
             double[][] regret = new double[seeds][];
             for (int s = 0; s < seeds; s++) {
                 double[] best = bestSoFar(parallel, s + 1, trials, tmp.resolve("p" + parallel + "-s" + (s + 1)));
