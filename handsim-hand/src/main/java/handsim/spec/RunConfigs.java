@@ -31,6 +31,8 @@ import java.util.function.Function;
 public final class RunConfigs {
 
     public static final String MODEL = "models/arm_hand.json";
+    /** The limits a model's joints are checked against ({@code handsim.model.Physiology}), read with the model so that it travels with it. */
+    public static final String PHYSIOLOGY = "models/physiology.json";
     public static final String SIM = "configs/sim.json";
     public static final String CONTROLLER = "configs/controller.json";
     public static final String EPISODE = "configs/episode.json";
@@ -51,7 +53,9 @@ public final class RunConfigs {
     }
 
     public HandModel model() {
-        return part(MODEL, ModelLoader::parse);
+        // a record made before the physiology was one of its documents is checked against the project's
+        return part(MODEL, j -> files.replays() && !files.has(PHYSIOLOGY) ? ModelLoader.parse(j)
+                : ModelLoader.parse(j, files.get(PHYSIOLOGY).node().toString()));
     }
 
     public SimConfig sim() {

@@ -13,12 +13,12 @@ import java.util.stream.Stream;
 /**
  * Byte-for-byte comparison of two runs' files, but for the wall times they measured (which no two
  * runs share, on one machine or many): a JSON line holding a time, {@code "seconds"}, {@code
- * "...Seconds"} or {@code "wall_s"}, is left out of both; every other byte must match. Lock files
+ * "...Seconds"}, {@code "secondsPer..."} or {@code "wall_s"}, is left out of both; every other byte must match. Lock files
  * ({@link handsim.report.Locks}) are not compared: they name the process that holds the folder.
  */
 final class SameBytes {
 
-    private static final Pattern TIME = Pattern.compile("^\\s*\"(seconds|[a-z]+Seconds|wall_s)\" : [-0-9.E]+,?$");
+    private static final Pattern TIME = Pattern.compile("^\\s*\"(seconds|[a-z]+Seconds|secondsPer[A-Za-z]+|wall_s)\" : [-0-9.E]+,?$");
 
     private SameBytes() {
     }
