@@ -1,6 +1,7 @@
 package handsim.model;
 
 import handsim.config.ConfigException;
+import handsim.config.Home;
 import handsim.config.Json;
 import handsim.math.Quat;
 import handsim.math.Vec3;
@@ -43,7 +44,24 @@ public final class ModelLoader {
 
     /** A model checked against the project's {@code models/physiology.json} ({@link Physiology}). */
     public static HandModel parse(Json root) {
-        Physiology physiology = Physiology.load();
+        return parse(root, Physiology.load());
+    }
+
+    /**
+     * A model checked against {@code physiology}, the text of {@code models/physiology.json} as a
+     * run read it ({@link #physiologyText}): for a machine without the project's files, such as a
+     * cluster's executor.
+     */
+    public static HandModel parse(Json root, String physiology) {
+        return parse(root, Physiology.parse(Json.parse(Physiology.FILE, physiology)));
+    }
+
+    /** The project's {@code models/physiology.json} as JSON text, to travel with a model. */
+    public static String physiologyText() {
+        return Json.load(Home.resolve(Physiology.FILE)).node().toString();
+    }
+
+    private static HandModel parse(Json root, Physiology physiology) {
         String name = root.string("name");
         root.allow("description", "units", "sources", "comment");
         List<Body> bodies = new ArrayList<>();

@@ -29,9 +29,12 @@ final class Physiology {
         this.entries = entries;
     }
 
+    /** The file, under the project root. */
+    static final String FILE = "models/physiology.json";
+
     /** The project's {@code models/physiology.json}. */
     static Physiology load() {
-        return parse(Json.load(Home.resolve("models/physiology.json")));
+        return parse(Json.load(Home.resolve(FILE)));
     }
 
     static Physiology parse(Json j) {
