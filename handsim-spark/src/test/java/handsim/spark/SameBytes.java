@@ -58,7 +58,10 @@ final class SameBytes {
             }
             Path other = actual.resolve(rel);
             assertTrue(Files.exists(other), rel + " is missing from " + actual);
-            if (rel.toString().endsWith(".json")) {
+            if (rel.getFileName().toString().equals("steps.csv")) {
+                // a card trial's steps.csv ends each row with the step's wall time split in three (assembly, contact, solve)
+                assertEquals(withoutLastColumns(f, 3), withoutLastColumns(other, 3), rel + ": every column but the wall times");
+            } else if (rel.toString().endsWith(".json")) {
                 assertEquals(withoutTimes(f), withoutTimes(other), rel + ": every byte but the wall times");
             } else {
                 assertEquals(-1L, Files.mismatch(f, other), rel + ": byte for byte");
@@ -66,5 +69,16 @@ final class SameBytes {
             compared++;
         }
         return compared;
+    }
+
+    /** The file's lines without their last {@code n} comma-separated columns. */
+    private static java.util.List<String> withoutLastColumns(Path file, int n) throws java.io.IOException {
+        return Files.readAllLines(file).stream().map(line -> {
+            String kept = line;
+            for (int k = 0; k < n && kept.lastIndexOf(',') >= 0; k++) {
+                kept = kept.substring(0, kept.lastIndexOf(','));
+            }
+            return kept;
+        }).toList();
     }
 }
