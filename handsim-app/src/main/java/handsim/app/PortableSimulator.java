@@ -24,7 +24,7 @@ record PortableSimulator(String model, String physiology, String sim) implements
 
     /** The simulator of {@code configs}' model and physics. */
     static PortableSimulator of(RunConfigs configs) {
-        return new PortableSimulator(configs.files().get(RunConfigs.MODEL).node().toString(), ModelLoader.physiologyText(),
+        return new PortableSimulator(configs.files().get(RunConfigs.MODEL).node().toString(), configs.physiology(),
                 configs.files().get(RunConfigs.SIM).node().toString());
     }
 

@@ -53,9 +53,15 @@ public final class RunConfigs {
     }
 
     public HandModel model() {
-        // a record made before the physiology was one of its documents is checked against the project's
-        return part(MODEL, j -> files.replays() && !files.has(PHYSIOLOGY) ? ModelLoader.parse(j)
-                : ModelLoader.parse(j, files.get(PHYSIOLOGY).node().toString()));
+        return part(MODEL, j -> ModelLoader.parse(j, physiology()));
+    }
+
+    /**
+     * {@code models/physiology.json} as this run read it (JSON text), what its model is checked
+     * against; a record made before the physiology was one of its documents uses the project's.
+     */
+    public String physiology() {
+        return files.replays() && !files.has(PHYSIOLOGY) ? ModelLoader.physiologyText() : files.get(PHYSIOLOGY).node().toString();
     }
 
     public SimConfig sim() {
