@@ -16,6 +16,9 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.apache.spark.SparkContext;
+import org.apache.spark.SparkContext$;
+import org.apache.spark.SparkExecutorInfo;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer;
@@ -127,7 +130,8 @@ class ClusterCommandsTest {
         try {
             run.start();
             awaitTrialFiles(remote, 1, null);
-            cluster.killWorker(1); // both workers run a trial now (two at once): one is lost with its executor
+            awaitRunningTasks(2); // each one-core worker runs a trial now, so either worker's loss costs one
+            cluster.killWorker(1);
             run.join(TimeUnit.MINUTES.toMillis(20));
         } finally {
             System.setOut(console);
@@ -169,6 +173,30 @@ class ClusterCommandsTest {
             assertTrue(alive == null || alive.isAlive(), "the driver ended early: " + TestCluster.read(tmp.resolve("driver.log")));
             Thread.sleep(100);
         }
+    }
+
+    /**
+     * Waits until the study's driver (this JVM's active Spark context) has {@code n} tasks running
+     * on its executors. A trial takes seconds, so a worker killed right after still holds one.
+     */
+    private static void awaitRunningTasks(int n) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(5);
+        while (runningTasks() < n) {
+            assertTrue(System.nanoTime() < deadline, "no " + n + " tasks running at once within 5 minutes");
+            Thread.sleep(20);
+        }
+    }
+
+    private static int runningTasks() {
+        scala.Option<SparkContext> active = SparkContext$.MODULE$.getActive();
+        if (active.isEmpty()) {
+            return 0;
+        }
+        int running = 0;
+        for (SparkExecutorInfo executor : active.get().statusTracker().getExecutorInfos()) {
+            running += executor.numRunningTasks();
+        }
+        return running;
     }
 
     /** Writes to two streams. */
