@@ -16,6 +16,10 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import handsim.rollout.LocalRollouts;
+import handsim.rollout.RemoteCalls;
+import handsim.rollout.RemoteRollouts;
+import handsim.rollout.Rollouts;
 import org.apache.spark.SparkContext;
 import org.apache.spark.SparkContext$;
 import org.apache.spark.SparkExecutorInfo;
@@ -30,14 +34,15 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Commands on a standalone cluster of a master and two one-core workers started by
- * scripts/spark-cluster. A short box evaluation (6 tests) writes the JSON, CSV and success map of
- * the same evaluation on this JVM's threads, byte for byte but for what describes the run. A
- * short Card Snapping study (reduced fingertips, 0.2 s trials, 6 trials, two at once) gives the
- * trial files of the same study on threads, byte for byte but for the wall times the trials
- * measured; so does the study when its driver is killed and the same command resumes it, and
- * when a worker is killed mid-study (the cluster runs its trial again and says what that lost). A
- * warm start's CMA-ES generation of throws and a DAgger round's teacher labels give the thread
- * pool's files too.
+ * scripts/spark-cluster, one cluster for all of them. Rollouts give the thread pool's results bit
+ * for bit, with handsim's classes read by the executors from the driver's classpath. A short box
+ * evaluation (4 tests) writes the JSON, CSV and success map of the same evaluation on this JVM's
+ * threads, byte for byte but for what describes the run. A short Card Snapping study (reduced
+ * fingertips, 0.2 s trials, 4 trials, two at once) gives the trial files of the same study on
+ * threads, byte for byte but for the wall times the trials measured, when its driver is killed
+ * and the same command resumes it, and when a worker is killed mid-study (the cluster runs its
+ * trial again and says what that lost). A warm start's CMA-ES generation of throws and a DAgger
+ * round's teacher labels give the thread pool's files too, on the worker left.
  * The cluster is stopped after the tests, also when they fail.
  */
 @Tag("slow")
@@ -49,6 +54,9 @@ class ClusterCommandsTest {
     /** What the comparison leaves out: study.json records each run's command line (--master among it). */
     private static final List<String> RUN_RECORDS = List.of("study.json");
 
+    /** Trials of the study: the config's 3 random start-up trials, then one of TPE's. */
+    private static final int TRIALS = 4;
+
     private static TestCluster cluster;
     private static Path local;
 
@@ -56,7 +64,7 @@ class ClusterCommandsTest {
     static Path tmp;
 
     private static List<String> study(Path out, String... more) {
-        List<String> args = new ArrayList<>(List.of("cards", "optimize", "--sleight", "snap", "--trials", "6", "--seed", "4", "--mesh",
+        List<String> args = new ArrayList<>(List.of("cards", "optimize", "--sleight", "snap", "--trials", Integer.toString(TRIALS), "--seed", "4", "--mesh",
                 "reduced", "--no-frames", "--config", CONFIG.toString(), "--set", "snap.trial.duration=0.2", "--set", "snap.params.t1=0.05", "--set",
                 "snap.params.t2=0.07", "--set", "snap.params.t3=0.13", "--out", out.toString()));
         args.addAll(List.of(more));
@@ -79,23 +87,33 @@ class ClusterCommandsTest {
 
     @Test
     @Order(0)
+    void rolloutsOnTwoWorkersGiveTheThreadPoolsResults() throws Exception {
+        LocalSparkRolloutsTest.Gaussians task = new LocalSparkRolloutsTest.Gaussians(11, 0.25, -1);
+        List<Double> local;
+        try (Rollouts<LocalSparkRolloutsTest.Counter> pool = new LocalRollouts<>(1, LocalSparkRolloutsTest.Counter::new)) {
+            local = pool.run(30, task.shippable());
+        }
+        ByteArrayOutputStream lines = new ByteArrayOutputStream();
+        try (RemoteCalls calls = new SparkBackend().connect(cluster.master(), "handsim test", new PrintStream(lines, true, StandardCharsets.UTF_8))) {
+            List<Double> remote = new RemoteRollouts<>(calls, new LocalSparkRolloutsTest.Counters(), null).run(30, task.shippable());
+            for (int i = 0; i < 30; i++) {
+                assertEquals(Double.doubleToRawLongBits(local.get(i)), Double.doubleToRawLongBits(remote.get(i)), "sum " + i);
+            }
+        }
+        String out = lines.toString(StandardCharsets.UTF_8);
+        assertTrue(out.contains("spark: 30 sums done in") && out.contains("on 2 executors"), out);
+    }
+
+    @Test
+    @Order(1)
     void aBoxEvaluationOnTheClusterIsTheThreadPools() throws Exception {
         Path dir = tmp.resolve("box");
-        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "6", "--seed", "77"};
+        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "4", "--seed", "77"};
         assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
                 "--csv", dir.resolve("threads.csv").toString())));
         assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
                 "--csv", dir.resolve("cluster.csv").toString())));
         SparkEvaluationTest.assertSameEvaluation(dir, "threads", "cluster");
-    }
-
-    @Test
-    @Order(1)
-    void theClusterGivesTheLocalTrialFiles() throws Exception {
-        Path remote = tmp.resolve("cluster");
-        assertEquals(0, Main.run(study(remote, "--master", cluster.master()).toArray(String[]::new)));
-        int files = SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
-        assertTrue(files >= 6 + 2, files + " files compared: the 6 trials, best.json and history.png at least");
     }
 
     @Test
@@ -113,7 +131,7 @@ class ClusterCommandsTest {
             driver.destroyForcibly().waitFor(30, TimeUnit.SECONDS); // kill -9: no shutdown hook, trials under way lost
         }
         int before = trialFiles(remote);
-        assertTrue(before >= 2 && before < 6, before + " trials finished when the driver was killed");
+        assertTrue(before >= 2 && before < TRIALS, before + " trials finished when the driver was killed");
         assertEquals(0, Main.run(study(remote, "--master", cluster.master()).toArray(String[]::new)), "the same command resumes");
         SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
     }
@@ -137,7 +155,8 @@ class ClusterCommandsTest {
             System.setOut(console);
         }
         assertEquals(0, exit[0], "the study finishes on the worker left");
-        SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
+        int files = SameBytes.assertSameFiles(local, remote, RUN_RECORDS);
+        assertTrue(files >= TRIALS + 2, files + " files compared: the trials, best.json and history.png at least");
         Matcher lost = Pattern.compile("(\\d+) attempts lost with their executors and run again \\(([0-9.]+) s of executor time lost\\)")
                 .matcher(lines.toString(StandardCharsets.UTF_8));
         assertTrue(lost.find(), "the batch's last line says what the lost worker cost");
