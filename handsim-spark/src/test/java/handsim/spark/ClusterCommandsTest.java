@@ -109,9 +109,9 @@ class ClusterCommandsTest {
     void aBoxEvaluationOnTheClusterIsTheThreadPools() throws Exception {
         Path dir = tmp.resolve("box");
         String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "4", "--seed", "77"};
-        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
+        assertEquals(0, Main.run(SparkTrainingRuns.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
                 "--csv", dir.resolve("threads.csv").toString())));
-        assertEquals(0, Main.run(SparkTrainingRunsTest.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
+        assertEquals(0, Main.run(SparkTrainingRuns.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
                 "--csv", dir.resolve("cluster.csv").toString())));
         SparkEvaluationTest.assertSameEvaluation(dir, "threads", "cluster");
     }
@@ -166,13 +166,13 @@ class ClusterCommandsTest {
     @Test
     @Order(4)
     void aWarmStartGenerationOnTheClusterIsTheThreadPools() throws Exception {
-        SparkTrainingRunsTest.assertWarmStartOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("warmstart")), cluster.master());
+        SparkTrainingRuns.assertWarmStartOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("warmstart")), cluster.master());
     }
 
     @Test
     @Order(5)
     void aDaggerRoundsTeacherLabelsOnTheClusterAreTheThreadPools() throws Exception {
-        SparkTrainingRunsTest.assertDaggerRoundOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("dagger")), cluster.master());
+        SparkTrainingRuns.assertDaggerRoundOnSparkIsTheThreadPools(Files.createDirectories(tmp.resolve("dagger")), cluster.master());
     }
 
     private static int trialFiles(Path study) throws IOException {

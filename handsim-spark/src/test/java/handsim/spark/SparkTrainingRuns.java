@@ -11,20 +11,18 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Tag;
-import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code warmstart} and {@code dagger} through Spark in local mode ({@code local[2]}; ClusterCommandsTest
- * runs the same on a standalone cluster) against the thread pool: a warm start's CMA-ES generations
- * of throws give the same searches and dataset byte for byte, and the same pretrained actor; a
- * DAgger round's episodes give the same demonstrations (teacher labels and the teacher's trials)
- * byte for byte, and the same fitted actor. What differs is only what describes the run (its
- * folder's name, command line, wall time).
+ * {@code warmstart} and {@code dagger} through Spark against the thread pool, for ClusterCommandsTest
+ * on a standalone cluster: a warm start's CMA-ES generation of throws gives the same searches and
+ * dataset byte for byte, and the same pretrained actor; a DAgger round's episodes give the same
+ * demonstrations (teacher labels and the teacher's trials) byte for byte, and the same fitted
+ * actor. What differs is only what describes the run (its folder's name, command line, wall time).
  */
-@Tag("slow")
-class SparkTrainingRunsTest {
+final class SparkTrainingRuns {
+
+    private SparkTrainingRuns() {
+    }
 
     private static Path onlyRun(Path runs) throws IOException {
         try (Stream<Path> list = Files.list(runs)) {
@@ -46,17 +44,7 @@ class SparkTrainingRunsTest {
         return Stream.concat(Stream.of(base), Stream.of(more)).toArray(String[]::new);
     }
 
-    @Test
-    void aWarmStartsGenerationsOnSparkAreTheThreadPools(@TempDir Path tmp) throws Exception {
-        assertWarmStartOnSparkIsTheThreadPools(tmp, "local[2]");
-    }
-
-    @Test
-    void aDaggerRoundsTeacherLabelsOnSparkAreTheThreadPools(@TempDir Path tmp) throws Exception {
-        assertDaggerRoundOnSparkIsTheThreadPools(tmp, "local[2]");
-    }
-
-    /** A short warm start (one CMA-ES generation of each of 2 searches) on two threads and on {@code master}: the same bytes. */
+    /** A short warm start (one CMA-ES generation of each of 2 searches; 2 is the fewest the warm start takes) on two threads and on {@code master}: the same bytes. */
     static void assertWarmStartOnSparkIsTheThreadPools(Path tmp, String master) throws Exception {
         // 2 initial conditions, 10 throws each: the start point, then one generation of λ = 9 (7 action entries)
         String[] warmstart = {"warmstart", "--config", "configs/train/flip-warmstart.json", "--set", "warmstart.initialConditions=2",
