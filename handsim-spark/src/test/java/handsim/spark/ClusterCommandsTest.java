@@ -36,7 +36,7 @@ import org.junit.jupiter.api.io.TempDir;
  * Commands on a standalone cluster of a master and two one-core workers started by
  * scripts/spark-cluster, one cluster for all of them. Rollouts give the thread pool's results bit
  * for bit, with handsim's classes read by the executors from the driver's classpath. A short box
- * evaluation (4 tests) writes the JSON, CSV and success map of the same evaluation on this JVM's
+ * evaluation (2 tests) writes the JSON, CSV and success map of the same evaluation on this JVM's
  * threads, byte for byte but for what describes the run. A short Card Snapping study (reduced
  * fingertips, 0.2 s trials, 4 trials, two at once) gives the trial files of the same study on
  * threads, byte for byte but for the wall times the trials measured, when its driver is killed
@@ -108,7 +108,7 @@ class ClusterCommandsTest {
     @Order(1)
     void aBoxEvaluationOnTheClusterIsTheThreadPools() throws Exception {
         Path dir = tmp.resolve("box");
-        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "4", "--seed", "77"};
+        String[] box = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "2", "--seed", "77"};
         assertEquals(0, Main.run(SparkTrainingRuns.with(box, "--workers", "2", "--json", dir.resolve("threads.json").toString(),
                 "--csv", dir.resolve("threads.csv").toString())));
         assertEquals(0, Main.run(SparkTrainingRuns.with(box, "--master", cluster.master(), "--json", dir.resolve("cluster.json").toString(),
