@@ -127,11 +127,12 @@ final class EvaluateCommand implements Callable<Integer> {
         ObjectNode record = run.toJson();
         // a cluster is reached before the journal is made: a master that cannot be used leaves nothing behind
         Rollouts<Simulator> remote = cluster.remote() ? ClusterWiring.evaluation(cluster, run) : null;
-        EpisodeJournal journal = json == null ? null : ClusterWiring.closingOnFailure(remote, () -> openJournal(record, commit));
+        EpisodeJournal journal = json == null ? null : ClusterWiring.closingOnFailure(remote,
+                () -> EvaluationJournals.open(json, record, commit, spec.commandLine().getParseResult().originalArgs()));
         long t0 = System.nanoTime();
         ObjectNode out = summaryHead(run);
         try (Rollouts<Simulator> rollouts = remote != null ? remote : Wiring.rollouts(configs.model(), configs.sim(), workers)) {
-            definition.evaluation(request, withJournal(setup, journal)).run(rollouts, out);
+            definition.evaluation(request, EvaluationJournals.with(setup, journal)).run(rollouts, out);
         }
         out.put("wall_s", (System.nanoTime() - t0) / 1e9);
         if (exported != null) {
@@ -194,33 +195,6 @@ final class EvaluateCommand implements Callable<Integer> {
         return out;
     }
 
-    /**
-     * The journal of --json: the run's episodes already finished by the same command, killed. What
-     * makes the episodes what they are signs it: the spec, but for the episode and test counts
-     * (more episodes of the same run keep the first ones).
-     */
-    private EpisodeJournal openJournal(ObjectNode record, String commit) {
-        ObjectNode signature = record.deepCopy();
-        signature.remove(List.of("episodes", "tests"));
-        EpisodeJournal journal = EpisodeJournal.open(journalFile(), signature, commit);
-        StopRecords.evaluation(json, journal, spec.commandLine().getParseResult().originalArgs(), commit);
-        if (journal.finished() > 0) {
-            System.out.printf("resuming: %d finished episodes read from %s%s%n", journal.finished(), journal.file(),
-                    journal.droppedLines() > 0 ? " (" + journal.droppedLines() + " line cut short by a kill dropped)" : "");
-        }
-        return journal;
-    }
-
-    /** Where --json's finished episodes are kept while the run goes: FILE.episodes.jsonl. */
-    private Path journalFile() {
-        return json.resolveSibling(json.getFileName() + ".episodes.jsonl");
-    }
-
-    private static EvaluationSetup withJournal(EvaluationSetup s, EpisodeJournal journal) {
-        return new EvaluationSetup(s.controller(), s.object(), s.limits(), s.launches(), s.config(), s.policies(), s.planning(),
-                s.twins(), s.watcher(), journal, s.console());
-    }
-
     /** Refuses counts out of range and outputs that cannot be written; the animation export asked for, or null. */
     private RunExport validate(EvaluateSpec run) {
         checkRange("--loops", run.loops(), 0);
@@ -254,7 +228,7 @@ final class EvaluateCommand implements Callable<Integer> {
             run.policies().forEach((role, file) -> OutputPaths.input(file, "the " + role.replace('_', ' ') + " recorded in --spec "
                     + specFile));
         }
-        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : journalFile()).file("--csv", csv)
+        new OutputPaths().heldFile("--json", json).file("--json", json == null ? null : EvaluationJournals.file(json)).file("--csv", csv)
                 .file("--plot", plot).check();
         return RunExport.to(export);
     }

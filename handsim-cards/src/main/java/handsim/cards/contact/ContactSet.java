@@ -49,8 +49,7 @@ public final class ContactSet {
     /** how many candidate pairs (vertex–face, edge–edge) reduce to each contact: its barrier counts that often */
     int[] multiplicity = new int[256];
     DistanceType[] mollified = new DistanceType[256];
-    private long[] keys = new long[256];
-    private int[] order = new int[256];
+    long[] keys = new long[256];
 
     // workspace
     private final double[] buf = new double[12];
@@ -199,7 +198,7 @@ public final class ContactSet {
                 }
             }
         }
-        deduplicate();
+        DuplicateContacts.merge(this);
     }
 
     static void gather(double[] x, double[] out, int... ns) {
@@ -220,7 +219,6 @@ public final class ContactSet {
             mollified = Arrays.copyOf(mollified, cap);
             multiplicity = Arrays.copyOf(multiplicity, cap);
             keys = Arrays.copyOf(keys, cap);
-            order = Arrays.copyOf(order, cap);
         }
         // canonical node order: sorted edges, so duplicates get equal keys
         int[] c = ns.clone();
@@ -264,46 +262,6 @@ public final class ContactSet {
         int t = a[i];
         a[i] = a[j];
         a[j] = t;
-    }
-
-    /** Sorts by key and drops repeats (the key encodes kind and nodes). */
-    private void deduplicate() {
-        Integer[] idx = new Integer[count];
-        for (int i = 0; i < count; i++) {
-            idx[i] = i;
-        }
-        Arrays.sort(idx, (a, b) -> Long.compare(keys[a], keys[b]));
-        int[] k2 = new int[count];
-        int[] n2 = new int[4 * count];
-        double[] xi2 = new double[count];
-        double[] eps2 = new double[count];
-        DistanceType[] m2 = new DistanceType[count];
-        int[] mult2 = new int[count];
-        long[] key2 = new long[count];
-        int out = 0;
-        for (int i = 0; i < count; i++) {
-            int s = idx[i];
-            if (out > 0 && key2[out - 1] == keys[s]) {
-                mult2[out - 1] += multiplicity[s];
-                continue;
-            }
-            k2[out] = kind[s];
-            System.arraycopy(nodes, 4 * s, n2, 4 * out, 4);
-            xi2[out] = xi[s];
-            eps2[out] = epsX[s];
-            m2[out] = mollified[s];
-            mult2[out] = multiplicity[s];
-            key2[out] = keys[s];
-            out++;
-        }
-        System.arraycopy(k2, 0, kind, 0, out);
-        System.arraycopy(n2, 0, nodes, 0, 4 * out);
-        System.arraycopy(xi2, 0, xi, 0, out);
-        System.arraycopy(eps2, 0, epsX, 0, out);
-        System.arraycopy(m2, 0, mollified, 0, out);
-        System.arraycopy(mult2, 0, multiplicity, 0, out);
-        System.arraycopy(key2, 0, keys, 0, out);
-        count = out;
     }
 
     /** Node pairs coupled by the active contacts (for the sparsity pattern). */
