@@ -9,6 +9,7 @@ import handsim.rollout.RecordedTask;
 import handsim.rollout.RolloutTask;
 import handsim.rollout.Rollouts;
 import handsim.sim.Simulator;
+import handsim.taskdef.TaskDefinitions;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.io.PrintStream;
@@ -75,14 +76,14 @@ record PortableEvaluation(String spec, LinkedHashMap<String, byte[]> policies) i
     @Override
     public String what() {
         Json s = specJson();
-        return s.string("task").equals("box") ? "box tests" : s.has("copies") ? "copies of episodes" : "episodes";
+        return TaskDefinitions.evaluatesTests(s.string("task")) ? "box tests" : s.has("copies") ? "copies of episodes" : "episodes";
     }
 
     @Override
     public String label(int index) {
         Json s = specJson();
         long seed = s.longValue("seed");
-        if (s.string("task").equals("box")) {
+        if (TaskDefinitions.evaluatesTests(s.string("task"))) {
             return "box test " + index + " (seed " + (seed + index) + ")";
         }
         if (s.has("copies")) {

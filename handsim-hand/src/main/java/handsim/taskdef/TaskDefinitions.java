@@ -49,6 +49,11 @@ public final class TaskDefinitions {
         define(name, file, null);
     }
 
+    /** Whether task {@code name}'s evaluation runs tests (the box's positions, {@code --tests}) rather than episodes. */
+    public static boolean evaluatesTests(String name) {
+        return BoxDefinition.NAME.equals(checkName(name));
+    }
+
     /** Refuses a name that is no task, in one line listing the tasks. */
     public static String checkName(String name) {
         if (!NAMES.contains(name)) {

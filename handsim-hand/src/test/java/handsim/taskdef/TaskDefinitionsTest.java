@@ -57,6 +57,15 @@ class TaskDefinitionsTest {
     }
 
     @Test
+    void onlyTheBoxEvaluatesTestsAndAnUnknownTaskIsRefused() {
+        // the box's evaluation places the box --tests times (paper sec. 5.2); height and flip run --episodes
+        assertTrue(TaskDefinitions.evaluatesTests("box"));
+        assertFalse(TaskDefinitions.evaluatesTests("height"));
+        assertFalse(TaskDefinitions.evaluatesTests("flip"));
+        assertThrows(IllegalArgumentException.class, () -> TaskDefinitions.evaluatesTests("juggle"));
+    }
+
+    @Test
     void eachTaskRefusesTheEvaluateOptionsItDoesNotTake() {
         RunConfigs shipped = TestSupport.configs();
         assertThrows(IllegalArgumentException.class, () -> shipped.task("height").check(request("height", true, null, null)),
