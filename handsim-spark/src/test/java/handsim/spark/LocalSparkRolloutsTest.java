@@ -33,8 +33,9 @@ import org.junit.jupiter.api.Test;
  * Rollouts through Spark in local mode ({@code local[2]}: the driver's own threads as executors),
  * against the thread pool: the same results bit for bit, in index order; a rollout that throws
  * stops the run with its own exception; a journal's finished rollouts are read back, not run.
+ * Slow: a second Spark context beside LocalSparkStudyTest's, which keeps local mode in the fast tests.
  */
-@Tag("fast")
+@Tag("slow")
 class LocalSparkRolloutsTest {
 
     private static final ByteArrayOutputStream LINES = new ByteArrayOutputStream();

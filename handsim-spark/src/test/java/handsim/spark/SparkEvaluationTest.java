@@ -15,9 +15,10 @@ import org.junit.jupiter.api.io.TempDir;
  * {@code evaluate --master local[2]}: a short box evaluation (4 tests, the nominal controller)
  * through Spark in local mode writes the CSV and the success map of the same evaluation on the
  * thread pool byte for byte, and its JSON but for what describes the run (wall time, workers,
- * command line). The evaluation is rebuilt from its spec alone where the tests run.
+ * command line). The evaluation is rebuilt from its spec alone where the tests run. Slow (about 50
+ * s for the two evaluations): the fast tests keep Spark's local mode in LocalSparkStudyTest.
  */
-@Tag("fast")
+@Tag("slow")
 class SparkEvaluationTest {
 
     static String[] box(Path dir, String name, String... more) {

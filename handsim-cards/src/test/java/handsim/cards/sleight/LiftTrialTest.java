@@ -15,21 +15,30 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * A reduced Double Lift trial (four card-stock cards, three of them free, coarse fingertips,
- * 0.4 s): pinching the top of the stack and lifting raises the top two cards and leaves the
- * third where it lay, no surface ever touches another, and fingers that never close touch
- * nothing.
+ * A reduced Double Lift trial (four card-stock cards of 7 x 4 cells, three of them free, coarse
+ * fingertips, 0.4 s; cards of 5 x 3 cells no longer reach the pads): pinching the top of the stack
+ * and lifting raises the top two cards and leaves the third where it lay, no surface ever touches
+ * another, and fingers that never close touch nothing. The tests share one rested stack, warmed up by whichever runs first.
  */
 @Tag("fast")
 class LiftTrialTest {
 
+    /** The checkpoint of the reduced stack, shared by the tests (its key is the same for all). */
+    @TempDir
+    static Path checkpoints;
+
     static LiftTrial reduced(Path checkpoints) {
+        return LiftTrial.fromConfigs(Path.of("."), null, "cardStock", reducedSettings(), checkpoints);
+    }
+
+    static Map<String, String> reducedSettings() {
         Map<String, String> o = new LinkedHashMap<>();
         o.put("double-lift.stack.count", "4");
         o.put("double-lift.fingertip.mesh", "\"coarse\"");
         o.put("double-lift.trial.duration", "0.4");
         o.put("double-lift.trial.restAfterLift", "0.05");
-        return LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, checkpoints);
+        o.put("double-lift.card.cells", "[7, 4]");
+        return o;
     }
 
     /** Pinch 0.48 mm (0.2 mm of it closes the gap) in [0, 0.08] s, lift 5 mm in [0.1, 0.3] s, from the top of the stack. */
@@ -38,8 +47,8 @@ class LiftTrialTest {
     }
 
     @Test
-    void pinchingTheTopOfTheStackLiftsTheTopTwoCardsAndLeavesTheThird(@TempDir Path dir) {
-        LiftTrial trial = reduced(dir);
+    void pinchingTheTopOfTheStackLiftsTheTopTwoCardsAndLeavesTheThird() {
+        LiftTrial trial = reduced(checkpoints);
         LiftResult r = trial.run(pinchAndLift(0, 0.006), null);
         assertTrue(r.cost().minGap() > 0, "minimum gap " + r.cost().minGap());
         // the pads reach the top two cards' ends: both rise, by less than the bones' 5 mm (they slip)
@@ -52,8 +61,9 @@ class LiftTrialTest {
     }
 
     @Test
-    void fingersThatNeverCloseTouchNothing(@TempDir Path dir) {
-        LiftTrial trial = reduced(dir);
+    @Tag("slow") // a second trial; the fast tests keep the lift above
+    void fingersThatNeverCloseTouchNothing() {
+        LiftTrial trial = reduced(checkpoints);
         // no pinch: the skins stay 0.2 mm off the cards' ends while the bones rise 5 mm
         LiftResult r = trial.run(pinchAndLift(0, 0), null);
         // the resting cards stay put: within a micrometre (a 200th of a card's thickness) of where they lay
@@ -62,8 +72,8 @@ class LiftTrialTest {
     }
 
     @Test
-    void searchSpacesThatAllowInvalidTrialsAreRefused(@TempDir Path dir) {
-        LiftTrial trial = reduced(dir);
+    void searchSpacesThatAllowInvalidTrialsAreRefused() {
+        LiftTrial trial = reduced(checkpoints);
         String objectives = "\"objectives\": [{\"name\": \"h1\", \"direction\": \"minimize\"}, {\"name\": \"h2\", \"direction\": \"minimize\"},"
                 + " {\"name\": \"d3\", \"direction\": \"minimize\"}],";
         String params = "\"params\": [{\"name\": \"hStart\", \"low\": 0, \"high\": 0.001}, {\"name\": \"t0\", \"low\": 0, \"high\": 0.02},"
@@ -81,8 +91,9 @@ class LiftTrialTest {
     }
 
     @Test
-    void startHeightsAndSpeedsBeyondAFingersReachAreRefusedAndATrialPastItsBudgetStops(@TempDir Path dir) {
-        LiftTrial trial = reduced(dir);
+    @Tag("slow") // a third trial, stopped by its budget
+    void startHeightsAndSpeedsBeyondAFingersReachAreRefusedAndATrialPastItsBudgetStops() {
+        LiftTrial trial = reduced(checkpoints);
         // 3 cm above the stack: farther than the fingertip's half-height and the stack's height (LiftParams.MAX_START_HEIGHT)
         IllegalArgumentException high = assertThrows(IllegalArgumentException.class,
                 () -> trial.run(pinchAndLift(0.03, 0.006), null));
@@ -92,15 +103,11 @@ class LiftTrialTest {
                 () -> trial.run(new LiftParams(0, new BoneWindows(0, 0.08, 0.006, 0.1, 0.3, 1e6)), null));
         assertEquals("vs must be a speed in [0, 2] m/s, got 1000000", fast.getMessage());
         // a Newton iteration a simulated step (100 a simulated second, 40 for the 0.4 s trial): the pinch's steps take more
-        Map<String, String> o = new LinkedHashMap<>();
-        o.put("double-lift.stack.count", "4");
-        o.put("double-lift.fingertip.mesh", "\"coarse\"");
-        o.put("double-lift.trial.duration", "0.4");
-        o.put("double-lift.trial.restAfterLift", "0.05");
-        LiftTrial budgeted = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, dir);
+        Map<String, String> o = reducedSettings();
+        LiftTrial budgeted = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, checkpoints);
         budgeted.restedStack(); // the warm-up within the shipped budget
         o.put("budget.maxNewtonIterationsPerSecond", "100");
-        LiftTrial tight = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, dir);
+        LiftTrial tight = LiftTrial.fromConfigs(Path.of("."), null, "cardStock", o, checkpoints);
         handsim.cards.contact.BudgetExceeded e = assertThrows(handsim.cards.contact.BudgetExceeded.class,
                 () -> tight.run(pinchAndLift(0, 0.006), null));
         assertTrue(e.getMessage().matches("more than 40 Newton iterations by step \\d+ .*"), e.getMessage());

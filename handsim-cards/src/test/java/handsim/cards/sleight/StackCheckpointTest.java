@@ -32,10 +32,10 @@ import org.junit.jupiter.api.io.TempDir;
 @Tag("fast")
 class StackCheckpointTest {
 
-    /** Three PES cards on the table (the warm-up has no fingertips; coarse ones keep the trial world small). */
+    /** Three PES cards of 7 x 4 cells on the table (the warm-up has no fingertips; coarse ones keep the trial world small). */
     static LiftTrial fewCards(Path checkpoints, Map<String, String> more) {
         Map<String, String> o = new LinkedHashMap<>(Map.of("double-lift.stack.count", "3", "double-lift.fingertip.mesh", "\"coarse\"",
-                "double-lift.fingertip.softLayers", "1"));
+                "double-lift.fingertip.softLayers", "1", "double-lift.card.cells", "[7, 4]"));
         o.putAll(more);
         List<String> lines = new ArrayList<>();
         return LiftTrial.fromConfigs(Path.of("."), null, "pes", o, checkpoints).withLog(lines::add);
