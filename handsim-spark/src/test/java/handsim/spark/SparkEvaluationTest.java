@@ -12,17 +12,17 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code evaluate --master local[2]}: a short box evaluation (4 tests, the nominal controller)
+ * {@code evaluate --master local[2]}: a short box evaluation (2 tests, the nominal controller)
  * through Spark in local mode writes the CSV and the success map of the same evaluation on the
  * thread pool byte for byte, and its JSON but for what describes the run (wall time, workers,
- * command line). The evaluation is rebuilt from its spec alone where the tests run. Slow (about 50
+ * command line). The evaluation is rebuilt from its spec alone where the tests run. Slow (about 25
  * s for the two evaluations): the fast tests keep Spark's local mode in LocalSparkStudyTest.
  */
 @Tag("slow")
 class SparkEvaluationTest {
 
     static String[] box(Path dir, String name, String... more) {
-        String[] base = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "4", "--seed", "31", "--json",
+        String[] base = {"evaluate", "--task", "box", "--controller", "nominal", "--tests", "2", "--seed", "31", "--json",
                 dir.resolve(name + ".json").toString(), "--csv", dir.resolve(name + ".csv").toString()};
         String[] all = new String[base.length + more.length];
         System.arraycopy(base, 0, all, 0, base.length);
@@ -43,7 +43,7 @@ class SparkEvaluationTest {
         assertEquals(0, Main.run(box(dir, "spark", "--master", "local[2]")));
         assertSameEvaluation(dir, "threads", "spark");
         Json spark = Json.load(dir.resolve("spark.json"));
-        assertEquals(4, spark.integer("tests"));
+        assertEquals(2, spark.integer("tests"));
         assertTrue(spark.get("provenance").string("command").contains("--master local[2]"), "the command line is recorded as given");
     }
 }
