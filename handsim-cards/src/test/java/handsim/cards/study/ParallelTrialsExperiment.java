@@ -27,12 +27,12 @@ public final class ParallelTrialsExperiment {
         {0.2348, 0.1451, 0.3522, 0.2883, 0.3047, 0.6650}, {0.4047, 0.8828, 0.8732, 0.5743, 0.1091, 0.0381}};
     private static final double[] ALPHA = {1.0, 1.2, 3.0, 3.2};
     /** Hartmann 6's global minimum (Dixon and Szegö 1978; Surjanovic and Bingham's test-function library). */
-    static final double MINIMUM = -3.32237;
+    public static final double MINIMUM = -3.32237;
 
     private ParallelTrialsExperiment() {
     }
 
-    static double hartmann6(double[] x) {
+    public static double hartmann6(double[] x) {
         double f = 0;
         for (int i = 0; i < 4; i++) {
             double s = 0;
