@@ -95,28 +95,41 @@ public final class SamplerExperiment {
         System.out.println("|---|---" + "|---".repeat(ns.length) + "|");
         double[] reference = {1.1, 1.1, 1.1};
         for (String problem : List.of("hartmann6 regret", "dtlz2 hypervolume")) {
-            for (boolean multivariate : new boolean[] {false, true}) {
-                double[][] at = new double[ns.length][seeds];
+            boolean regret = problem.startsWith("hartmann6");
+            double[][][] at = new double[2][ns.length][seeds];
+            for (int m = 0; m < 2; m++) {
                 for (int s = 0; s < seeds; s++) {
-                    Path dir = tmp.resolve(problem.split(" ")[0] + "-" + multivariate + "-" + (s + 1));
-                    if (problem.startsWith("hartmann6")) {
-                        List<double[]> v = run("hartmann6", 1, 6, multivariate, s + 1, trials, x -> new double[] {ParallelTrialsExperiment.hartmann6(x)}, dir);
+                    Path dir = tmp.resolve(problem.split(" ")[0] + "-" + m + "-" + (s + 1));
+                    if (regret) {
+                        List<double[]> v = run("hartmann6", 1, 6, m == 1, s + 1, trials, x -> new double[] {ParallelTrialsExperiment.hartmann6(x)}, dir);
                         for (int k = 0; k < ns.length; k++) {
-                            at[k][s] = v.subList(0, ns[k]).stream().mapToDouble(r -> r[0]).min().orElseThrow() - ParallelTrialsExperiment.MINIMUM;
+                            at[m][k][s] = v.subList(0, ns[k]).stream().mapToDouble(r -> r[0]).min().orElseThrow() - ParallelTrialsExperiment.MINIMUM;
                         }
                     } else {
-                        List<double[]> v = run("dtlz2", 3, 7, multivariate, s + 1, trials, SamplerExperiment::dtlz2, dir);
+                        List<double[]> v = run("dtlz2", 3, 7, m == 1, s + 1, trials, SamplerExperiment::dtlz2, dir);
                         for (int k = 0; k < ns.length; k++) {
-                            at[k][s] = hypervolume(v, ns[k], reference);
+                            at[m][k][s] = hypervolume(v, ns[k], reference);
                         }
                     }
                 }
-                StringBuilder row = new StringBuilder("| " + problem + " | " + (multivariate ? "multivariate" : "independent") + " |");
-                for (double[] a : at) {
+                StringBuilder row = new StringBuilder("| " + problem + " | " + (m == 1 ? "multivariate" : "independent") + " |");
+                for (double[] a : at[m]) {
                     row.append(String.format(Locale.ROOT, " %.4f / %.4f |", median(a), Arrays.stream(a).average().orElseThrow()));
                 }
                 System.out.println(row);
             }
+            // paired by seed (the same start-up trials): on how many seeds multivariate is ahead, behind
+            StringBuilder row = new StringBuilder("| " + problem + " | multivariate ahead / behind (of " + seeds + " seeds) |");
+            for (int k = 0; k < ns.length; k++) {
+                int ahead = 0, behind = 0;
+                for (int s = 0; s < seeds; s++) {
+                    double better = regret ? at[0][k][s] - at[1][k][s] : at[1][k][s] - at[0][k][s];
+                    ahead += better > 0 ? 1 : 0;
+                    behind += better < 0 ? 1 : 0;
+                }
+                row.append(" ").append(ahead).append(" / ").append(behind).append(" |");
+            }
+            System.out.println(row);
         }
         try (Stream<Path> walk = Files.walk(tmp)) {
             walk.sorted(Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
