@@ -18,7 +18,8 @@ import org.junit.jupiter.api.io.TempDir;
  * A reduced Double Lift trial (four card-stock cards of 7 x 4 cells, three of them free, coarse
  * fingertips, 0.4 s; cards of 5 x 3 cells do not reach the pads): pinching the top of the stack
  * and lifting raises the top two cards and leaves the third where it lay, no surface ever touches
- * another, and fingers that never close touch nothing. The tests share one rested stack, warmed up by whichever runs first.
+ * another, and fingers that never close touch nothing. The tests share one rested stack, warmed
+ * up by whichever runs first.
  */
 @Tag("fast")
 class LiftTrialTest {

@@ -121,7 +121,8 @@ public final class ParallelTrialsExperiment {
         return Double.POSITIVE_INFINITY;
     }
 
-    private static double median(double[] sorted) {
+    /** The median of values already sorted. */
+    public static double median(double[] sorted) {
         int n = sorted.length;
         return n % 2 == 1 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
     }

@@ -78,10 +78,16 @@ public final class SamplerExperiment {
 
     /** The hypervolume of the first n value vectors, each clipped to the reference point (a clipped point adds nothing). */
     static double hypervolume(List<double[]> values, int n, double[] reference) {
-        double[][] points = values.subList(0, Math.min(n, values.size())).stream()
-                .map(v -> { double[] c = new double[v.length]; for (int d = 0; d < v.length; d++) c[d] = Math.min(v[d], reference[d]); return c; })
-                .toArray(double[][]::new);
+        double[][] points = values.subList(0, Math.min(n, values.size())).stream().map(v -> clip(v, reference)).toArray(double[][]::new);
         return points.length == 0 ? 0 : Hypervolume.of(points, reference);
+    }
+
+    private static double[] clip(double[] v, double[] reference) {
+        double[] c = new double[v.length];
+        for (int d = 0; d < v.length; d++) {
+            c[d] = Math.min(v[d], reference[d]);
+        }
+        return c;
     }
 
     private static void functions(int seeds, int trials) throws Exception {
@@ -152,31 +158,30 @@ public final class SamplerExperiment {
                     first = t.number();
                 }
             }
-            StringBuilder best = new StringBuilder(), volume = new StringBuilder();
+            List<String> best = new ArrayList<>(), volume = new ArrayList<>();
             for (int n : new int[] {10, 20, 30, scaled.size()}) {
                 if (n > scaled.size()) {
-                    best.append("– / ");
-                    volume.append("– / ");
+                    best.add("–");
+                    volume.add("–");
                     continue;
                 }
                 List<double[]> done = scaled.subList(0, n).stream().filter(s -> s != null).toList();
-                best.append(String.format(Locale.ROOT, "%.3g / ", done.stream().mapToDouble(s -> Arrays.stream(s).max().orElseThrow()).min().orElse(Double.NaN)));
-                volume.append(c.multiObjective() ? String.format(Locale.ROOT, "%.2f / ", hypervolume(done, n, new double[] {5, 5, 5})) : "– / ");
+                best.add(String.format(Locale.ROOT, "%.3g", done.stream().mapToDouble(s -> Arrays.stream(s).max().orElseThrow()).min().orElse(Double.NaN)));
+                volume.add(c.multiObjective() ? String.format(Locale.ROOT, "%.2f", hypervolume(done, n, new double[] {5, 5, 5})) : "–");
             }
             // where the sampler put its trials after the random start-up: the median trial, in tolerances (a failed trial counts as infinite)
             double[] tpe = scaled.stream().skip(c.sampler().nStartupTrials())
                     .mapToDouble(v -> v == null ? Double.POSITIVE_INFINITY : Arrays.stream(v).max().orElseThrow()).toArray();
             System.out.printf(Locale.ROOT, "| %s | %s | %d | %d | %s | %s | %s | %s |%n", dir.getFileName(), c.sampler().multivariate() ? "multivariate" : "independent",
-                    study.seed(), scaled.size(), best.substring(0, best.length() - 3), tpe.length == 0 ? "–" : String.format(Locale.ROOT, "%.3g", median(tpe)),
-                    first < 0 ? "none" : Integer.toString(first), volume.substring(0, volume.length() - 3));
+                    study.seed(), scaled.size(), String.join(" / ", best), tpe.length == 0 ? "–" : String.format(Locale.ROOT, "%.3g", median(tpe)),
+                    first < 0 ? "none" : Integer.toString(first), String.join(" / ", volume));
         }
     }
 
     private static double median(double[] values) {
-        double[] s = values.clone();
-        Arrays.sort(s);
-        int n = s.length;
-        return n % 2 == 1 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        return ParallelTrialsExperiment.median(sorted);
     }
 
     public static void main(String[] args) throws Exception {
