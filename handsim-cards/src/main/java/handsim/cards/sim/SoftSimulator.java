@@ -37,6 +37,10 @@ public final class SoftSimulator {
     private final double[] rhs;
     private final double[] step;
     private final double[] translation = new double[3];
+    private final double[] rotation = new double[3];
+    private final double[] turn = new double[9];
+    /** Each fingertip's bone centre at rest (the centroid of its bone nodes), the pivot of its turns. */
+    private final double[][] boneCentres;
     private final StepStats total = new StepStats();
     private long[] pattern = new long[0];
     private java.util.function.DoubleUnaryOperator gravityScale = t -> 1;
@@ -63,6 +67,14 @@ public final class SoftSimulator {
         grad = new double[n];
         rhs = new double[3 * world.freeCount];
         step = new double[n];
+        boneCentres = new double[world.boneNodes.length][3];
+        for (int f = 0; f < boneCentres.length; f++) {
+            for (int node : world.boneNodes[f]) {
+                for (int c = 0; c < 3; c++) {
+                    boneCentres[f][c] += world.rest[3 * node + c] / world.boneNodes[f].length;
+                }
+            }
+        }
     }
 
     /**
@@ -237,12 +249,47 @@ public final class SoftSimulator {
     public void placeBones(double t, double[] pos) {
         for (int f = 0; f < world.boneNodes.length; f++) {
             bones.translation(f, t, translation);
+            bones.rotation(f, t, rotation);
+            if (rotation[0] == 0 && rotation[1] == 0 && rotation[2] == 0) {
+                // a pure translation, added to the rest positions as they are (no round trip through the centre)
+                for (int node : world.boneNodes[f]) {
+                    for (int c = 0; c < 3; c++) {
+                        pos[3 * node + c] = world.rest[3 * node + c] + translation[c];
+                    }
+                }
+                continue;
+            }
+            rotationMatrix(rotation, turn);
+            double[] centre = boneCentres[f];
             for (int node : world.boneNodes[f]) {
+                double rx = world.rest[3 * node] - centre[0];
+                double ry = world.rest[3 * node + 1] - centre[1];
+                double rz = world.rest[3 * node + 2] - centre[2];
                 for (int c = 0; c < 3; c++) {
-                    pos[3 * node + c] = world.rest[3 * node + c] + translation[c];
+                    pos[3 * node + c] = centre[c] + turn[3 * c] * rx + turn[3 * c + 1] * ry + turn[3 * c + 2] * rz + translation[c];
                 }
             }
         }
+    }
+
+    /** Rodrigues' formula: the row-major rotation matrix of rotation vector {@code v} into {@code r}. */
+    static void rotationMatrix(double[] v, double[] r) {
+        double angle = Math.sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        double kx = v[0] / angle;
+        double ky = v[1] / angle;
+        double kz = v[2] / angle;
+        double c = Math.cos(angle);
+        double s = Math.sin(angle);
+        double u = 1 - c;
+        r[0] = c + kx * kx * u;
+        r[1] = kx * ky * u - kz * s;
+        r[2] = kx * kz * u + ky * s;
+        r[3] = ky * kx * u + kz * s;
+        r[4] = c + ky * ky * u;
+        r[5] = ky * kz * u - kx * s;
+        r[6] = kz * kx * u - ky * s;
+        r[7] = kz * ky * u + kx * s;
+        r[8] = c + kz * kz * u;
     }
 
     /** −∇E into rhs (free nodes) and the projected Hessian into the system; the exact pattern at a step's start. */

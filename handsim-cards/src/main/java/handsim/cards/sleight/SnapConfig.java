@@ -6,7 +6,13 @@ import java.nio.file.Path;
 /** The Card Snapping scene from configs/cards/snap.json, validated field by field. */
 public record SnapConfig(CardSpec card, FingertipSpec fingertip, double pinchBelowTop, double initialGap, double holdDepth,
                          double warmup, double duration, double alphaTargetDegrees, double dropLimit, double droppedObjective,
-                         int frameEvery, SnapParams defaults) {
+                         int frameEvery, Slide slide, SnapParams defaults) {
+
+    /**
+     * How the slide window moves the bones: STRAIGHT along the cards' short side, in opposite
+     * directions (thesis 4.2.4), or TURN about the cards' normal, in opposite senses.
+     */
+    public enum Slide { STRAIGHT, TURN }
 
     public static SnapConfig load(Path file) {
         return parse(Json.load(file), null);
@@ -35,6 +41,7 @@ public record SnapConfig(CardSpec card, FingertipSpec fingertip, double pinchBel
                 hold.number("initialGap", 0, 0.01), hold.number("depth", 0, 0.01), hold.number("warmup", 0, 10),
                 duration, trial.number("alphaTarget", 0, 180), trial.number("dropLimit", 0, 10), trial.number("droppedObjective", 0, 1e6),
                 trial.integer("frameEvery", 1, 10_000),
+                trial.has("slide") ? Slide.valueOf(trial.choice("slide", "straight", "turn").toUpperCase(java.util.Locale.ROOT)) : Slide.STRAIGHT,
                 defaults);
         if (pinchBelowTop > cardSpec.length()) {
             throw tip.fieldError("pinchBelowTop", "must be within the card's length " + Json.show(cardSpec.length()) + " m, got "

@@ -22,7 +22,10 @@ import java.util.List;
  * along ±y, then gravity ramps on over the second half; in the
  * trial they pinch by a further vp (t1 − t0) along ±y in [t0, t1] and slide in opposite
  * directions along x, thumb −x and finger +x, by vs (t3 − t2) in [t2, t3]. Each window follows a
- * half-cosine ease, so its mean speed is the parameter's.
+ * half-cosine ease, so its mean speed is the parameter's. With {@code slide: "turn"} the slide
+ * window turns the bones instead, about the cards' normal through each bone's centre, the thumb
+ * one way and the finger the other, by the angle whose arc at the fingertip's long semi-axis is
+ * vs (t3 − t2): the pads stay on the cards and move in their plane, along arcs.
  */
 public final class SnapScene {
 
@@ -87,15 +90,30 @@ public final class SnapScene {
         double w = config.warmup();
         double depth = config.holdDepth();
         BoneWindows windows = p == null ? null : p.windows();
-        return (finger, time, out) -> {
-            double sign = finger == 0 ? 1 : -1;
-            double hold = depth * BoneWindows.ease(time, 0, 0.5 * w);
-            double tt = time - w;
-            double pinch = windows == null ? 0 : windows.pinch(tt);
-            double slide = windows == null ? 0 : windows.second(tt);
-            out[0] = -sign * slide;
-            out[1] = sign * (hold + pinch);
-            out[2] = 0;
+        boolean turn = config.slide() == SnapConfig.Slide.TURN;
+        // a turn's arc is measured at the fingertip's long semi-axis, the reach of its pad along the card
+        double arcRadius = config.fingertip().semiAxes()[0];
+        return new BoneMotion() {
+            @Override
+            public void translation(int finger, double time, double[] out) {
+                double sign = finger == 0 ? 1 : -1;
+                double hold = depth * BoneWindows.ease(time, 0, 0.5 * w);
+                double tt = time - w;
+                double pinch = windows == null ? 0 : windows.pinch(tt);
+                double slide = windows == null || turn ? 0 : windows.second(tt);
+                out[0] = -sign * slide;
+                out[1] = sign * (hold + pinch);
+                out[2] = 0;
+            }
+
+            @Override
+            public void rotation(int finger, double time, double[] out) {
+                double sign = finger == 0 ? 1 : -1;
+                double arc = windows == null || !turn ? 0 : windows.second(time - w);
+                out[0] = 0;
+                out[1] = sign * arc / arcRadius;
+                out[2] = 0;
+            }
         };
     }
 
