@@ -1,5 +1,7 @@
 package handsim.sim.island;
 
+import handsim.math.ArcTangent;
+
 /**
  * The joint angles a hinge's and a universal joint's stops are tested with, measured as ODE
  * measures them, so that a stop engages exactly when ode4j's would: from the relative rotation
@@ -37,10 +39,10 @@ final class JointAngles {
 
     /**
      * The angle of a rotation given by {@link #aboutAxis}, in [-pi, pi), with ODE's sign (the
-     * engine's axis turns the second body by minus the angle).
+     * engine's axis turns the second body by minus the angle); atan2 with Math.atan2's bits.
      */
     static double angle(double sinHalf, double cosHalf) {
-        double theta = 2 * Math.atan2(sinHalf, cosHalf);
+        double theta = 2 * ArcTangent.atan2(sinHalf, cosHalf);
         if (theta > Math.PI) {
             theta -= 2 * Math.PI;
         }

@@ -34,6 +34,14 @@ final class ProjectedSor {
     /** The shuffle period in iterations, ODE's. */
     private static final int SHUFFLE_PERIOD = 8;
 
+    /**
+     * A row's zero pattern, the same in J1 and J2 (linear 0-2, angular 3-5), which lets J x skip
+     * its zero terms with the dense sum's rounding (see {@link #dot}): any row, no linear part
+     * (a hinge's and a universal joint's angular rows, stops), and the three anchor rows of a
+     * ball (linear along x, y or z, angular without that axis).
+     */
+    static final int DENSE = 0, ANGULAR = 1, ANCHOR_X = 2, ANCHOR_Y = 3, ANCHOR_Z = 4;
+
     /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
     final double[] fc;
     /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
@@ -41,6 +49,8 @@ final class ProjectedSor {
     /** The island's rows in their first sweep order (see {@link #pack}), and per row its body offsets and normal row. */
     private double[] data = new double[0];
     private int[] meta = new int[0];
+    /** Each packed row's zero pattern in J ({@link #DENSE}, {@link #ANGULAR}, {@link #ANCHOR_X} ...). */
+    private int[] kind = new int[0];
     private double[] lambda = new double[0];
     private int[] order = new int[0];
     /** Each assembled row's index in {@link #data}. */
@@ -139,6 +149,7 @@ final class ProjectedSor {
             position = new int[n];
             lambda = new double[n];
             meta = new int[3 * n];
+            kind = new int[n];
             data = new double[STRIDE * n];
         }
         int frictionRows = 0;
@@ -174,7 +185,7 @@ final class ProjectedSor {
     }
 
     /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
-    private static void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
+    private void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
         inverseMassTimes(d, o + J1, o + IMJ1, a / 6, bodies);
         double sum = 0;
         for (int k = 0; k < 6; k++) {
@@ -188,6 +199,7 @@ final class ProjectedSor {
         }
         double cfm = d[o + CFM];
         double ad = sor / (sum + cfm);
+        kind[o / STRIDE] = kind(d, o, b >= 0);
         d[o + CFM] = cfm * ad;
         d[o + RHS] *= ad;
         for (int k = 0; k < 6; k++) {
@@ -234,9 +246,10 @@ final class ProjectedSor {
             }
             for (int k = s; k < e; k++) {
                 int o = STRIDE * k;
-                double sum = Math.fma(a1, d[o + 1], a0 * d[o]) + Math.fma(a3, d[o + 3], a2 * d[o + 2]) + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+                int kd = kind[k];
+                double sum = dot(kd, d, o, a0, a1, a2, a3, a4, a5);
                 if (b >= 0) {
-                    sum += Math.fma(c1, d[o + 7], c0 * d[o + 6]) + Math.fma(c3, d[o + 9], c2 * d[o + 8]) + Math.fma(c5, d[o + 11], c4 * d[o + 10]);
+                    sum += dot(kd, d, o + J2, c0, c1, c2, c3, c4, c5);
                 }
                 double old = lambda[k];
                 double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
@@ -307,7 +320,8 @@ final class ProjectedSor {
             int a = meta[3 * i];
             int b = meta[3 * i + 1];
             double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
-            double s = Math.fma(a1, d[o + 1], a0 * d[o]) + Math.fma(a3, d[o + 3], a2 * d[o + 2]) + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+            int kd = kind[i];
+            double s = dot(kd, d, o, a0, a1, a2, a3, a4, a5);
             double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
             if (b >= 0) {
                 c0 = f[b];
@@ -316,7 +330,7 @@ final class ProjectedSor {
                 c3 = f[b + 3];
                 c4 = f[b + 4];
                 c5 = f[b + 5];
-                s += Math.fma(c1, d[o + 7], c0 * d[o + 6]) + Math.fma(c3, d[o + 9], c2 * d[o + 8]) + Math.fma(c5, d[o + 11], c4 * d[o + 10]);
+                s += dot(kd, d, o + J2, c0, c1, c2, c3, c4, c5);
             }
             double old = lambda[i];
             double delta = (d[o + RHS] - old * d[o + CFM]) - s;
@@ -352,6 +366,53 @@ final class ProjectedSor {
                 f[b + 4] = Math.fma(delta, d[o + IMJ2 + 4], c4);
                 f[b + 5] = Math.fma(delta, d[o + IMJ2 + 5], c5);
             }
+        }
+    }
+
+    /** The first of the sparse kinds whose zeros J1 (and J2, when {@code twoBodies}) of the row at {@code o} has, else {@link #DENSE}. */
+    static int kind(double[] d, int o, boolean twoBodies) {
+        int fits = fits(d, o + J1);
+        if (twoBodies) {
+            fits &= fits(d, o + J2);
+        }
+        for (int k = ANGULAR; k <= ANCHOR_Z; k++) {
+            if ((fits & (1 << k)) != 0) {
+                return k;
+            }
+        }
+        return DENSE;
+    }
+
+    /** The kinds (bit k for kind k) whose zeros the 6 numbers at {@code p} have. */
+    private static int fits(double[] d, int p) {
+        boolean x = d[p] == 0, y = d[p + 1] == 0, z = d[p + 2] == 0;
+        int fits = 1 << DENSE;
+        fits |= x && y && z ? 1 << ANGULAR : 0;
+        fits |= y && z && d[p + 3] == 0 ? 1 << ANCHOR_X : 0;
+        fits |= x && z && d[p + 4] == 0 ? 1 << ANCHOR_Y : 0;
+        fits |= x && y && d[p + 5] == 0 ? 1 << ANCHOR_Z : 0;
+        return fits;
+    }
+
+    /**
+     * J x of one body's part of a row (6 numbers of {@code d} from {@code o}), summed as the dense
+     * sum {@code fma(x1, j1, x0 j0) + fma(x3, j3, x2 j2) + fma(x5, j5, x4 j4)} with the terms a
+     * row of this kind has as zeros left out: a zero product adds nothing to a sum and an fma
+     * with a zero addend rounds once, so every kind gives the dense sum's bits (up to the sign
+     * of a zero), in fewer dependent operations.
+     */
+    static double dot(int kind, double[] d, int o, double x0, double x1, double x2, double x3, double x4, double x5) {
+        switch (kind) {
+            case ANGULAR:
+                return x3 * d[o + 3] + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
+            case ANCHOR_X:
+                return x0 * d[o] + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
+            case ANCHOR_Y:
+                return (x1 * d[o + 1] + x3 * d[o + 3]) + x5 * d[o + 5];
+            case ANCHOR_Z:
+                return Math.fma(x3, d[o + 3], x2 * d[o + 2]) + x4 * d[o + 4];
+            default:
+                return Math.fma(x1, d[o + 1], x0 * d[o]) + Math.fma(x3, d[o + 3], x2 * d[o + 2]) + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
         }
     }
 }
