@@ -271,20 +271,37 @@ final class ProjectedSor {
                     next = hi;
                 }
                 lambda[k] = next;
-                a0 = Math.fma(delta, d[o + IMJ1], a0);
-                a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
-                a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                // M^-1 J^T's linear part is J's times 1/m: zero where J's is (an fma adding 0 is skipped)
+                switch (kd) {
+                    case ANGULAR -> {
+                    }
+                    case ANCHOR_X -> {
+                        a0 = Math.fma(delta, d[o + IMJ1], a0);
+                        c0 = Math.fma(delta, d[o + IMJ2], c0);
+                    }
+                    case ANCHOR_Y -> {
+                        a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                        c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                    }
+                    case ANCHOR_Z -> {
+                        a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                        c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    }
+                    default -> {
+                        a0 = Math.fma(delta, d[o + IMJ1], a0);
+                        a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                        a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                        c0 = Math.fma(delta, d[o + IMJ2], c0);
+                        c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                        c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    }
+                }
                 a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
                 a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
                 a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
-                if (b >= 0) {
-                    c0 = Math.fma(delta, d[o + IMJ2], c0);
-                    c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
-                    c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
-                    c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
-                    c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
-                    c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
-                }
+                c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
             }
             f[a] = a0;
             f[a + 1] = a1;
@@ -352,16 +369,35 @@ final class ProjectedSor {
                 next = hi;
             }
             lambda[i] = next;
-            f[a] = Math.fma(delta, d[o + IMJ1], a0);
-            f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
-            f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
+            // as in sweepBlocks: the linear part of M^-1 J^T is zero where J's is
+            switch (kd) {
+                case ANGULAR -> {
+                }
+                case ANCHOR_X -> f[a] = Math.fma(delta, d[o + IMJ1], a0);
+                case ANCHOR_Y -> f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                case ANCHOR_Z -> f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                default -> {
+                    f[a] = Math.fma(delta, d[o + IMJ1], a0);
+                    f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                    f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                }
+            }
             f[a + 3] = Math.fma(delta, d[o + IMJ1 + 3], a3);
             f[a + 4] = Math.fma(delta, d[o + IMJ1 + 4], a4);
             f[a + 5] = Math.fma(delta, d[o + IMJ1 + 5], a5);
             if (b >= 0) {
-                f[b] = Math.fma(delta, d[o + IMJ2], c0);
-                f[b + 1] = Math.fma(delta, d[o + IMJ2 + 1], c1);
-                f[b + 2] = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                switch (kd) {
+                    case ANGULAR -> {
+                    }
+                    case ANCHOR_X -> f[b] = Math.fma(delta, d[o + IMJ2], c0);
+                    case ANCHOR_Y -> f[b + 1] = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                    case ANCHOR_Z -> f[b + 2] = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    default -> {
+                        f[b] = Math.fma(delta, d[o + IMJ2], c0);
+                        f[b + 1] = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                        f[b + 2] = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    }
+                }
                 f[b + 3] = Math.fma(delta, d[o + IMJ2 + 3], c3);
                 f[b + 4] = Math.fma(delta, d[o + IMJ2 + 4], c4);
                 f[b + 5] = Math.fma(delta, d[o + IMJ2 + 5], c5);
