@@ -27,8 +27,7 @@ import java.util.Arrays;
  * change, and written back once at the block's end. That is the same Gauss-Seidel update, row
  * after row; it spares each row the store and reload of the fc its predecessor changed. Products
  * are accumulated with fused multiply-adds ({@link Math#fma}: one rounding, the CPU's FMA
- * instruction where it has one). A row's sum and update leave out the terms its kind of J has as
- * zeros ({@link #dot}), with the dense sum's bits.
+ * instruction where it has one).
  */
 final class ProjectedSor {
 
@@ -272,37 +271,20 @@ final class ProjectedSor {
                     next = hi;
                 }
                 lambda[k] = next;
-                // M^-1 J^T's linear part is J's times 1/m: zero where J's is (an fma adding 0 is skipped)
-                switch (kd) {
-                    case ANGULAR -> {
-                    }
-                    case ANCHOR_X -> {
-                        a0 = Math.fma(delta, d[o + IMJ1], a0);
-                        c0 = Math.fma(delta, d[o + IMJ2], c0);
-                    }
-                    case ANCHOR_Y -> {
-                        a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
-                        c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
-                    }
-                    case ANCHOR_Z -> {
-                        a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
-                        c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
-                    }
-                    default -> {
-                        a0 = Math.fma(delta, d[o + IMJ1], a0);
-                        a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
-                        a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
-                        c0 = Math.fma(delta, d[o + IMJ2], c0);
-                        c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
-                        c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
-                    }
-                }
+                a0 = Math.fma(delta, d[o + IMJ1], a0);
+                a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
                 a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
                 a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
                 a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
-                c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
-                c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
-                c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                if (b >= 0) {
+                    c0 = Math.fma(delta, d[o + IMJ2], c0);
+                    c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                    c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                    c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                    c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                }
             }
             f[a] = a0;
             f[a + 1] = a1;
@@ -370,35 +352,21 @@ final class ProjectedSor {
                 next = hi;
             }
             lambda[i] = next;
-            addImpulse(kd, delta, d, o + IMJ1, f, a, a0, a1, a2, a3, a4, a5);
+            f[a] = Math.fma(delta, d[o + IMJ1], a0);
+            f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
+            f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
+            f[a + 3] = Math.fma(delta, d[o + IMJ1 + 3], a3);
+            f[a + 4] = Math.fma(delta, d[o + IMJ1 + 4], a4);
+            f[a + 5] = Math.fma(delta, d[o + IMJ1 + 5], a5);
             if (b >= 0) {
-                addImpulse(kd, delta, d, o + IMJ2, f, b, c0, c1, c2, c3, c4, c5);
+                f[b] = Math.fma(delta, d[o + IMJ2], c0);
+                f[b + 1] = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                f[b + 2] = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                f[b + 3] = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                f[b + 4] = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                f[b + 5] = Math.fma(delta, d[o + IMJ2 + 5], c5);
             }
         }
-    }
-
-    /**
-     * One body's fc after a row's impulse change: f[at..at+5] = x + delta M^-1 J^T (at
-     * {@code imj} of {@code d}), the linear terms where a row of this kind has M^-1 J^T zero
-     * left as they are (as {@link #sweepBlocks} does).
-     */
-    private static void addImpulse(int kind, double delta, double[] d, int imj, double[] f, int at, double x0, double x1, double x2,
-            double x3, double x4, double x5) {
-        switch (kind) {
-            case ANGULAR -> {
-            }
-            case ANCHOR_X -> f[at] = Math.fma(delta, d[imj], x0);
-            case ANCHOR_Y -> f[at + 1] = Math.fma(delta, d[imj + 1], x1);
-            case ANCHOR_Z -> f[at + 2] = Math.fma(delta, d[imj + 2], x2);
-            default -> {
-                f[at] = Math.fma(delta, d[imj], x0);
-                f[at + 1] = Math.fma(delta, d[imj + 1], x1);
-                f[at + 2] = Math.fma(delta, d[imj + 2], x2);
-            }
-        }
-        f[at + 3] = Math.fma(delta, d[imj + 3], x3);
-        f[at + 4] = Math.fma(delta, d[imj + 4], x4);
-        f[at + 5] = Math.fma(delta, d[imj + 5], x5);
     }
 
     /** The first of the sparse kinds whose zeros J1 (and J2, when {@code twoBodies}) of the row at {@code o} has, else {@link #DENSE}. */
