@@ -82,8 +82,8 @@ final class BenchCommand implements Callable<Integer> {
     private static final long WORKER_SEED_STRIDE = 100_000;
 
     /** What one worker measured. */
-    private record Run(long steps, double wallS, double cpuS, long bytes, StepAccounting engine, int episodes, int loopsCaught,
-            int firstCatches, boolean held, double ballToPalm) {
+    private record Run(long steps, double wallS, double cpuS, double stolenS, long bytes, StepAccounting engine, int episodes,
+            int loopsCaught, int firstCatches, boolean held, double ballToPalm) {
     }
 
     @Override
@@ -262,6 +262,7 @@ final class BenchCommand implements Callable<Integer> {
         final long t0;
         final long cpu0;
         final long bytes0;
+        final double stolen0;
 
         /** Starts measuring, and counting the engine's own allocation apart. */
         Meter(Simulator sim, long steps0) {
@@ -269,14 +270,18 @@ final class BenchCommand implements Callable<Integer> {
             this.steps0 = steps0;
             sim.setAccounting(true);
             engine0 = sim.accounting().copy();
+            // read before the clocks and the allocation count start: /proc/stat's reading allocates
+            stolen0 = HostSteal.seconds();
             t0 = System.nanoTime();
             cpu0 = THREADS.getCurrentThreadCpuTime();
             bytes0 = THREADS.getCurrentThreadAllocatedBytes();
         }
 
         Run finish(long steps, int episodes, int caught, int firstCatches, boolean held, double ballToPalm) {
-            Run r = new Run(steps - steps0, (System.nanoTime() - t0) / 1e9, (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9,
-                    THREADS.getCurrentThreadAllocatedBytes() - bytes0, minus(sim.accounting(), engine0),
+            double wallS = (System.nanoTime() - t0) / 1e9;
+            double cpuS = (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9;
+            long bytes = THREADS.getCurrentThreadAllocatedBytes() - bytes0;
+            Run r = new Run(steps - steps0, wallS, cpuS, HostSteal.seconds() - stolen0, bytes, minus(sim.accounting(), engine0),
                     episodes, caught, firstCatches, held, ballToPalm);
             sim.setAccounting(false);
             return r;
@@ -301,7 +306,7 @@ final class BenchCommand implements Callable<Integer> {
     private static ObjectNode summarize(List<Run> runs, SimConfig config) {
         long steps = 0, bytes = 0, engineBytes = 0, solverBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
         double wallSum = 0;
-        double wall = 0, cpu = 0;
+        double wall = 0, cpu = 0, stolen = 0;
         int episodes = 0, caught = 0, firstCatches = 0;
         boolean held = true;
         double ballToPalm = 0;
@@ -315,6 +320,8 @@ final class BenchCommand implements Callable<Integer> {
             solverNs += r.engine().solverNanos();
             wallSum += r.wallS();
             wall = Math.max(wall, r.wallS());
+            // the workers' windows overlap: the longest one's steal is the pass's
+            stolen = r.wallS() == wall ? r.stolenS() : stolen;
             cpu += r.cpuS();
             episodes += r.episodes();
             caught += r.loopsCaught();
@@ -329,6 +336,9 @@ final class BenchCommand implements Callable<Integer> {
         o.put("steps_per_s", steps / wall);
         o.put("realtime_factor", steps / wall * config.timeStep());
         o.put("steps_per_cpu_s", steps / cpu);
+        if (Double.isFinite(stolen)) {
+            o.put("host_steal_share", HostSteal.share(stolen, wall));
+        }
         o.put("bytes_per_step", (double) bytes / steps);
         o.put("engine_bytes_per_step", (double) engineBytes / steps);
         o.put("solver_bytes_per_step", (double) solverBytes / steps);
@@ -359,6 +369,9 @@ final class BenchCommand implements Callable<Integer> {
                 o.get("steps_per_cpu_s").asDouble(), o.get("bytes_per_step").asDouble(), o.get("engine_bytes_per_step").asDouble(),
                 o.get("solver_bytes_per_step").asDouble(), o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(),
                 o.get("loops_caught").asInt());
+        if (o.has("host_steal_share")) {
+            System.out.printf("    the host took %.1f %% of the CPUs' time (steal)%n", 100 * o.get("host_steal_share").asDouble());
+        }
     }
 
     private static String formatShares(Map<String, Double> shares) {

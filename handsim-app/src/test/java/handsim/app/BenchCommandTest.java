@@ -46,6 +46,13 @@ class BenchCommandTest {
         assertEquals(1.0, shares, 1e-9, "time shares add up");
         assertTrue(single.get("time_shares").get("solver").asDouble() > 0.3, "the solver dominates the step");
         assertTrue(single.has("sampled_shares"));
+        if (java.nio.file.Files.isReadable(java.nio.file.Path.of("/proc/stat"))) {
+            // the hypervisor's share of the CPUs during the measured window: a fraction
+            for (JsonNode pass : new JsonNode[] {single, parallel}) {
+                double steal = pass.get("host_steal_share").asDouble();
+                assertTrue(steal >= 0 && steal <= 1, "host_steal_share " + steal);
+            }
+        }
     }
 
     @Test

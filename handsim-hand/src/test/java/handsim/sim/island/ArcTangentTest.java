@@ -1,4 +1,4 @@
-package handsim.math;
+package handsim.sim.island;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,4 +1,4 @@
-package handsim.math;
+package handsim.sim.island;
 
 /**
  * atan2 bit for bit as {@link StrictMath#atan2} computes it, in Java: fdlibm 5.3's e_atan2.c and
@@ -6,7 +6,7 @@ package handsim.math;
  * return. On JDK 17 {@link Math#atan2} calls that C code through a native call, which costs a
  * stopped joint of the constrained step more than the arithmetic does.
  */
-public final class ArcTangent {
+final class ArcTangent {
 
     private ArcTangent() {
     }
@@ -33,7 +33,7 @@ public final class ArcTangent {
     }
 
     /** The arc tangent of x, in [-pi/2, pi/2]: {@link StrictMath#atan}'s bits. */
-    public static double atan(double x) {
+    static double atan(double x) {
         int hx = high(x);
         int ix = hx & 0x7fffffff;
         int id;
@@ -78,7 +78,7 @@ public final class ArcTangent {
     }
 
     /** The angle of the point (x, y), in [-pi, pi]: {@link StrictMath#atan2}'s bits. */
-    public static double atan2(double y, double x) {
+    static double atan2(double y, double x) {
         int hx = high(x), lx = low(x), ix = hx & 0x7fffffff;
         int hy = high(y), ly = low(y), iy = hy & 0x7fffffff;
         if ((ix | ((lx | -lx) >>> 31)) > 0x7ff00000 || (iy | ((ly | -ly) >>> 31)) > 0x7ff00000) {
