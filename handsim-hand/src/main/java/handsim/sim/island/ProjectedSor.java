@@ -85,7 +85,22 @@ final class ProjectedSor {
         if (m == 0) {
             return;
         }
-        pack(rows, start, m, 1 / h, bodies, sor);
+        pack(rows, start, m);
+        double rh = 1 / h;
+        double[] d = data;
+        for (int k = 0; k < m; k++) {
+            int o = STRIDE * k;
+            d[o + RHS] *= rh;
+            d[o + CFM] *= rh;
+            lambda[k] = 0;
+            order[k] = k;
+        }
+        for (int k = 0; k < m; k++) {
+            addFreeMotion(d, STRIDE * k, meta[3 * k], meta[3 * k + 1]);
+        }
+        for (int k = 0; k < m; k++) {
+            scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
+        }
         findBlocks(m);
         boolean shuffled = false;
         for (int it = 0; it < iterations; it++) {
@@ -124,13 +139,10 @@ final class ProjectedSor {
 
     /**
      * Copies rows [start, start + m) into {@link #data} in their first sweep order, rows without
-     * a friction index first, each group in assembly order, and makes each a rate and scales it
-     * as it arrives (one pass over a row's numbers): rhs and cfm times {@code rh} = 1/h, the
-     * free motion added to rhs, M^-1 J^T and the scaling ({@link #scale}). {@link #meta} holds
-     * each row's 6 b1, 6 b2 (-1 without a body 2) and the packed index of its normal row (-1 for
-     * none).
+     * a friction index first, each group in assembly order; {@link #meta} holds each row's 6 b1,
+     * 6 b2 (-1 without a body 2) and the packed index of its normal row (-1 for none).
      */
-    private void pack(ConstraintRows rows, int start, int m, double rh, RigidBodies bodies, double sor) {
+    private void pack(ConstraintRows rows, int start, int m) {
         if (order.length < m) {
             int n = Math.max(m, 2 * order.length);
             order = new int[n];
@@ -148,18 +160,9 @@ final class ProjectedSor {
         for (int i = start; i < start + m; i++) {
             int p = rows.findex[i] < 0 ? head++ : tail++;
             position[i - start] = p;
-            int o = STRIDE * p;
-            System.arraycopy(rows.data, STRIDE * i, data, o, STRIDE);
-            int a = 6 * rows.body1[i];
-            int b = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
-            meta[3 * p] = a;
-            meta[3 * p + 1] = b;
-            data[o + RHS] *= rh;
-            data[o + CFM] *= rh;
-            lambda[p] = 0;
-            order[p] = p;
-            addFreeMotion(data, o, a, b);
-            scale(data, o, a, b, bodies, sor);
+            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p, STRIDE);
+            meta[3 * p] = 6 * rows.body1[i];
+            meta[3 * p + 1] = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
         }
         for (int i = start; i < start + m; i++) {
             int f = rows.findex[i];
