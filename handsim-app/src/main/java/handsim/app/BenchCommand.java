@@ -27,7 +27,9 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CyclicBarrier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code handsim bench}: headless throughput of the real workload, catch-and-throw loops of the
@@ -82,6 +84,9 @@ final class BenchCommand implements Callable<Integer> {
     private static final long WORKER_SEED_STRIDE = 100_000;
 
     /** What one worker measured. */
+    @Spec
+    CommandSpec spec;
+
     private record Run(long steps, double wallS, double cpuS, double stolenS, long bytes, StepAccounting engine, int episodes,
             int loopsCaught, int firstCatches, boolean held, double ballToPalm) {
     }
@@ -111,6 +116,7 @@ final class BenchCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
         }
         new OutputPaths().file("--json", json).check();
+        String commit = Provenance.gitCommit(); // the code the figures are of
         HandModel model = Wiring.model(null);
         SimConfig base = Wiring.simConfig();
         SimConfig iterated = iterations != null ? base.withSolverIterations(iterations) : base;
@@ -169,6 +175,7 @@ final class BenchCommand implements Callable<Integer> {
         if (workers > 1) {
             out.set("parallel", total);
         }
+        out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs(), commit));
         if (json != null) {
             Outputs.writeJson(json, out);
             System.out.println("wrote " + json);

@@ -46,6 +46,11 @@ class BenchCommandTest {
         assertEquals(1.0, shares, 1e-9, "time shares add up");
         assertTrue(single.get("time_shares").get("solver").asDouble() > 0.3, "the solver dominates the step");
         assertTrue(single.has("sampled_shares"));
+        // which code and command the figures are of
+        JsonNode provenance = out.get("provenance");
+        assertTrue(provenance.get("command").asText().startsWith("scripts/handsim bench --seconds 0.1"), provenance.toString());
+        assertTrue(provenance.get("commit").asText().length() > 0, provenance.toString());
+        assertTrue(provenance.get("files").has("configs/sim.json"), provenance.toString());
         if (java.nio.file.Files.isReadable(java.nio.file.Path.of("/proc/stat"))) {
             // the hypervisor's share of the CPUs during the measured window: a fraction
             for (JsonNode pass : new JsonNode[] {single, parallel}) {
