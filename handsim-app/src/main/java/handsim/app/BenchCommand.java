@@ -83,10 +83,10 @@ final class BenchCommand implements Callable<Integer> {
     /** Seeds of worker w start at seed + w * WORKER_SEED_STRIDE. */
     private static final long WORKER_SEED_STRIDE = 100_000;
 
-    /** What one worker measured. */
     @Spec
     CommandSpec spec;
 
+    /** What one worker measured. */
     private record Run(long steps, double wallS, double cpuS, double stolenS, long bytes, StepAccounting engine, int episodes,
             int loopsCaught, int firstCatches, boolean held, double ballToPalm) {
     }

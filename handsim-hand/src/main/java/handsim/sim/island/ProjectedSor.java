@@ -100,6 +100,7 @@ final class ProjectedSor {
         }
         for (int k = 0; k < m; k++) {
             scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
+            kind[k] = kind(d, STRIDE * k, meta[3 * k + 1] >= 0);
         }
         findBlocks(m);
         boolean shuffled = false;
@@ -185,7 +186,7 @@ final class ProjectedSor {
     }
 
     /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
-    private void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
+    private static void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
         inverseMassTimes(d, o + J1, o + IMJ1, a / 6, bodies);
         double sum = 0;
         for (int k = 0; k < 6; k++) {
@@ -199,7 +200,6 @@ final class ProjectedSor {
         }
         double cfm = d[o + CFM];
         double ad = sor / (sum + cfm);
-        kind[o / STRIDE] = kind(d, o, b >= 0);
         d[o + CFM] = cfm * ad;
         d[o + RHS] *= ad;
         for (int k = 0; k < 6; k++) {

@@ -1,6 +1,7 @@
 package handsim.sim.island;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Tag;
@@ -18,7 +19,7 @@ class ArcTangentTest {
         double actual = ArcTangent.atan2(y, x);
         if (Double.isNaN(expected)) {
             // a NaN's payload is the platform's; only NaN-ness is specified
-            assertEquals(true, Double.isNaN(actual), () -> "atan2(" + y + ", " + x + ")");
+            assertTrue(Double.isNaN(actual), () -> "atan2(" + y + ", " + x + ")");
             return;
         }
         assertEquals(Double.doubleToRawLongBits(expected), Double.doubleToRawLongBits(actual),

@@ -1,6 +1,7 @@
 package handsim.sim.island;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Tag;
@@ -44,7 +45,7 @@ class ProjectedSorTest {
                 for (int z : ZEROS[found]) {
                     assertEquals(0, d[z], "kind " + found + " found for a row without its zeros");
                 }
-                assertEquals(true, kind == ProjectedSor.DENSE || found != ProjectedSor.DENSE, "a sparse row found dense");
+                assertTrue(kind == ProjectedSor.DENSE || found != ProjectedSor.DENSE, "a sparse row found dense");
                 double dense = ProjectedSor.dot(ProjectedSor.DENSE, d, 0, x[0], x[1], x[2], x[3], x[4], x[5]);
                 for (int k : new int[] {kind, found}) {
                     double sparse = ProjectedSor.dot(k, d, 0, x[0], x[1], x[2], x[3], x[4], x[5]);
