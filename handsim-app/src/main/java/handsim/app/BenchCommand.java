@@ -71,6 +71,16 @@ final class BenchCommand implements Callable<Integer> {
             description = "the constrained step: handsim (handsim's own) or ode4j (ode4j's quickStep) (default: configs/sim.json)")
     String stepper;
 
+    @Option(names = "--compare",
+            description = "run handsim's step and ode4j's quickStep in one process, one world each on the same seeds, "
+                    + "alternating slices of --slice simulated seconds, and report each and the ratio of their steps/s "
+                    + "(a slow spell of the machine then falls on both alike); loop scenario, one worker")
+    boolean compare;
+
+    @Option(names = "--slice", paramLabel = "S", defaultValue = "0.5",
+            description = "with --compare: simulated seconds of one stepper before the other takes over (default: ${DEFAULT-VALUE})")
+    double slice;
+
     @Option(names = "--throw-height", paramLabel = "H", defaultValue = "1.2",
             description = "desired apex height of every throw of the loop scenario (m, world; default: ${DEFAULT-VALUE})")
     double throwHeight;
@@ -115,6 +125,13 @@ final class BenchCommand implements Callable<Integer> {
         if (stepper != null && !stepper.equals("handsim") && !stepper.equals("ode4j")) {
             throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
         }
+        if (compare && (stepper != null || workers != 1 || !scenario.equals("loop"))) {
+            throw new IllegalArgumentException("--compare runs both steppers in the loop scenario on one worker: "
+                    + "drop --stepper, --workers and --scenario");
+        }
+        if (compare && !(slice > 0 && slice <= seconds)) {
+            throw new IllegalArgumentException("--slice must be in (0, --seconds], got " + slice);
+        }
         new OutputPaths().file("--json", json).check();
         String commit = Provenance.gitCommit(); // the code the figures are of
         HandModel model = Wiring.model(null);
@@ -122,6 +139,9 @@ final class BenchCommand implements Callable<Integer> {
         SimConfig iterated = iterations != null ? base.withSolverIterations(iterations) : base;
         SimConfig config = stepper != null ? iterated.withStepper(SimConfig.Stepper.of(stepper)) : iterated;
         ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
+        if (compare) {
+            return compare(model, config, thrown, commit);
+        }
 
         System.out.printf("bench %s: %d worker%s, %.0f s warm-up + %.0f s measured per worker, h = %.1f ms, "
                 + "%s step, %d iterations%n", scenario, workers, workers > 1 ? "s" : "", warmup, seconds,
@@ -204,39 +224,167 @@ final class BenchCommand implements Callable<Integer> {
 
     /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
     private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
-        HeightTask task = heightDefinition().newTask(HeightGoals.fixed(throwHeight));
-        CatchEvaluation evaluation = CatchEvaluation.nominal(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(),
-                Wiring.object(episodeOptions.object), task);
-        long warmSteps = Math.round(warmup / sim.config().timeStep());
-        long measuredSteps = Math.round(seconds / sim.config().timeStep());
-        long s = firstSeed;
-        CatchThrowEpisode episode = evaluation.start(sim, s);
-        long done = 0;
-        Meter meter = null;
-        int episodes = 1, caught = 0, firstCatches = 0;
-        while (true) {
-            if (meter == null && done >= warmSteps) {
-                await(start);
-                meter = new Meter(sim, done);
-                episodes = 1;
-                caught = 0;
-                firstCatches = 0;
-            }
-            if (meter != null && done - meter.steps0 >= measuredSteps) {
-                return meter.finish(done, episodes, caught, firstCatches, false, Double.NaN);
-            }
-            long before = sim.stepCount();
-            var loop = evaluation.tick(episode, s);
-            done += sim.stepCount() - before;
-            if (loop != null && loop.caught()) {
-                caught++;
-                firstCatches += loop.index() == 0 ? 1 : 0;
-            }
-            if (episode.status() != CatchThrowEpisode.Status.RUNNING) {
-                episode = evaluation.start(sim, ++s);
-                episodes++;
+        Loops loops = new Loops(sim, firstSeed);
+        loops.runTo(Math.round(warmup / sim.config().timeStep()));
+        await(start);
+        Meter meter = new Meter(sim, loops.done);
+        loops.resetCounts();
+        loops.runTo(meter.steps0 + Math.round(seconds / sim.config().timeStep()));
+        return meter.finish(loops.done, loops.episodes, loops.caught, loops.firstCatches, false, Double.NaN);
+    }
+
+    /** Catch-throw episodes of one world one after another, a drop starting the next seed, run in stretches. */
+    private final class Loops {
+        final Simulator sim;
+        final CatchEvaluation evaluation;
+        long seed;
+        CatchThrowEpisode episode;
+        /** Steps run so far. */
+        long done;
+        int episodes = 1, caught, firstCatches;
+
+        Loops(Simulator sim, long firstSeed) {
+            this.sim = sim;
+            HeightTask task = heightDefinition().newTask(HeightGoals.fixed(throwHeight));
+            evaluation = CatchEvaluation.nominal(Wiring.controllerConfig(), Wiring.episodeLimits(), Wiring.launches(),
+                    Wiring.object(episodeOptions.object), task);
+            seed = firstSeed;
+            episode = evaluation.start(sim, seed);
+        }
+
+        /** Runs control ticks until {@code steps} steps are done in all. */
+        void runTo(long steps) {
+            while (done < steps) {
+                long before = sim.stepCount();
+                var loop = evaluation.tick(episode, seed);
+                done += sim.stepCount() - before;
+                if (loop != null && loop.caught()) {
+                    caught++;
+                    firstCatches += loop.index() == 0 ? 1 : 0;
+                }
+                if (episode.status() != CatchThrowEpisode.Status.RUNNING) {
+                    episode = evaluation.start(sim, ++seed);
+                    episodes++;
+                }
             }
         }
+
+        /** Counts episodes and catches from here on, the running episode the first. */
+        void resetCounts() {
+            episodes = 1;
+            caught = 0;
+            firstCatches = 0;
+        }
+    }
+
+    /**
+     * {@code --compare}: one world per stepper on the same seeds, in this thread; each warms up,
+     * then they take turns of {@code --slice} simulated seconds (which goes first alternates) until
+     * each has run {@code --seconds}. A round is one slice of each; its ratio of steps/s is
+     * measured within a second or so, so a slow spell of the machine falls on both.
+     */
+    private Integer compare(HandModel model, SimConfig config, ObjectSpec thrown, String commit) throws Exception {
+        SimConfig.Stepper[] steppers = {SimConfig.Stepper.HANDSIM, SimConfig.Stepper.ODE4J};
+        double h = config.timeStep();
+        long sliceSteps = Math.round(slice / h);
+        long measuredSteps = Math.round(seconds / h);
+        int rounds = (int) ((measuredSteps + sliceSteps - 1) / sliceSteps);
+        System.out.printf("bench loop, compared: handsim's step and ode4j's quickStep, one world each, %.0f s warm-up, then "
+                + "%d rounds of %.2f s each, h = %.1f ms, %d iterations%n", warmup, rounds, slice, h * 1e3, config.solverIterations());
+        Simulator[] sims = new Simulator[2];
+        try {
+            Loops[] loops = new Loops[2];
+            long[] start = new long[2];
+            for (int k = 0; k < 2; k++) {
+                sims[k] = Wiring.isolatedSimulator(model, config.withStepper(steppers[k]));
+                loops[k] = new Loops(sims[k], episodeOptions.seed);
+                loops[k].runTo(Math.round(warmup / h));
+                start[k] = loops[k].done;
+                loops[k].resetCounts();
+            }
+            java.util.List<java.util.List<Run>> slices = List.of(new java.util.ArrayList<>(), new java.util.ArrayList<>());
+            double[] roundRatios = new double[rounds];
+            for (int r = 0; r < rounds; r++) {
+                for (int turn = 0; turn < 2; turn++) {
+                    int k = (r + turn) % 2;
+                    Meter meter = new Meter(sims[k], loops[k].done);
+                    loops[k].runTo(start[k] + Math.min(measuredSteps, (r + 1) * sliceSteps));
+                    slices.get(k).add(meter.finish(loops[k].done, 0, 0, 0, false, Double.NaN));
+                }
+                roundRatios[r] = rate(slices.get(0).get(r)) / rate(slices.get(1).get(r));
+            }
+            ObjectNode out = JsonNodeFactory.instance.objectNode();
+            out.put("scenario", "loop");
+            out.put("object", thrown.name());
+            out.put("time_step_s", h);
+            out.put("solver_iterations", config.solverIterations());
+            out.put("seconds_per_stepper", seconds);
+            out.put("slice_s", slice);
+            out.put("rounds", rounds);
+            ObjectNode[] summaries = new ObjectNode[2];
+            for (int k = 0; k < 2; k++) {
+                Run run = sequence(slices.get(k), loops[k]);
+                summaries[k] = summarize(List.of(run), config);
+                out.set(steppers[k].label(), summaries[k]);
+                print(steppers[k].label(), summaries[k]);
+            }
+            double ratio = summaries[0].get("steps_per_s").asDouble() / summaries[1].get("steps_per_s").asDouble();
+            double cpuRatio = summaries[0].get("steps_per_cpu_s").asDouble() / summaries[1].get("steps_per_cpu_s").asDouble();
+            java.util.Arrays.sort(roundRatios);
+            double q1 = quantile(roundRatios, 0.25), median = quantile(roundRatios, 0.5), q3 = quantile(roundRatios, 0.75);
+            out.put("ratio_steps_per_s", ratio);
+            out.put("ratio_steps_per_cpu_s", cpuRatio);
+            ObjectNode rr = out.putObject("round_ratios");
+            rr.put("median", median);
+            rr.put("q1", q1);
+            rr.put("q3", q3);
+            rr.put("min", roundRatios[0]);
+            rr.put("max", roundRatios[rounds - 1]);
+            System.out.printf("  handsim's step / ode4j's quickStep: %.2fx the steps/s (%.2fx per CPU second); "
+                    + "the %d rounds' ratios: median %.2f, middle half %.2f-%.2f, all %.2f-%.2f%n", ratio, cpuRatio, rounds, median, q1,
+                    q3, roundRatios[0], roundRatios[rounds - 1]);
+            out.set("provenance", Provenance.of(spec.commandLine().getParseResult().originalArgs(), commit));
+            if (json != null) {
+                Outputs.writeJson(json, out);
+                System.out.println("wrote " + json);
+            }
+            return summaries[0].get("loops_caught").asInt() > 0 && summaries[1].get("loops_caught").asInt() > 0 ? 0 : 1;
+        } finally {
+            for (Simulator sim : sims) {
+                if (sim != null) {
+                    sim.close();
+                }
+            }
+        }
+    }
+
+    private static double rate(Run r) {
+        return r.steps() / r.wallS();
+    }
+
+    /** The q-quantile of sorted values, linear between neighbours. */
+    static double quantile(double[] sorted, double q) {
+        double x = q * (sorted.length - 1);
+        int i = (int) Math.floor(x);
+        int j = Math.min(i + 1, sorted.length - 1);
+        return sorted[i] + (x - i) * (sorted[j] - sorted[i]);
+    }
+
+    /** Slices of one world run one after another, as one run; episodes and catches from its loops. */
+    private static Run sequence(List<Run> slices, Loops loops) {
+        long steps = 0, bytes = 0;
+        double wall = 0, cpu = 0, stolen = 0;
+        StepAccounting engine = new StepAccounting();
+        for (Run r : slices) {
+            steps += r.steps();
+            wall += r.wallS();
+            cpu += r.cpuS();
+            stolen += r.stolenS();
+            bytes += r.bytes();
+            StepAccounting e = r.engine();
+            engine.add(e.stepNanos(), e.collisionNanos(), e.solverNanos(), e.engineBytes(), e.solverBytes());
+        }
+        return new Run(steps, wall, cpu, stolen, bytes, engine, loops.episodes, loops.caught, loops.firstCatches, false, Double.NaN);
     }
 
     /** The arm holds the ball thrown into its palm: the foundation's benchmark. */

@@ -83,7 +83,12 @@ final class Wiring {
 
     /** A twin of {@code sim} for a planner: the same model and config, on an engine of its own. */
     static Simulator twinSimulator(Simulator sim) {
-        return IsolatedEngine.simulator(sim.model(), sim.config());
+        return isolatedSimulator(sim.model(), sim.config());
+    }
+
+    /** A simulator on an engine of its own (see {@link IsolatedEngine}), for several worlds in one thread. */
+    static Simulator isolatedSimulator(HandModel model, SimConfig config) {
+        return IsolatedEngine.simulator(model, config);
     }
 
     /** {@code workers} parallel rollout workers, each with an ode4j of its own (see {@link IsolatedEngine}). */

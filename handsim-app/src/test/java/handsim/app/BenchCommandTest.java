@@ -83,5 +83,35 @@ class BenchCommandTest {
         assertEquals(2, Main.run("bench", "--workers", "0"));
         assertEquals(2, Main.run("bench", "--scenario", "juggle"));
         assertEquals(2, Main.run("bench", "--stepper", "bullet"));
+        assertEquals(2, Main.run("bench", "--compare", "--workers", "2"));
+        assertEquals(2, Main.run("bench", "--compare", "--stepper", "ode4j"));
+        assertEquals(2, Main.run("bench", "--compare", "--seconds", "1", "--slice", "2"));
+    }
+
+    @Test
+    void compareAlternatesBothSteppersAndReportsTheirRatio(@TempDir Path dir) throws Exception {
+        Path json = dir.resolve("compare.json");
+        // 0.1 s per stepper in slices of 0.04 s: rounds of 200, 200 and 100 steps; no catch in that time
+        int code = Main.run("bench", "--compare", "--seconds", "0.1", "--warmup", "0.02", "--slice", "0.04", "--json", json.toString());
+        assertEquals(1, code, "no catch in 0.12 s");
+        JsonNode out = new ObjectMapper().readTree(json.toFile());
+        assertEquals(3, out.get("rounds").asInt());
+        JsonNode handsim = out.get("handsim");
+        JsonNode ode4j = out.get("ode4j");
+        // each world measures exactly its simulated time, summed over its slices
+        assertEquals(500, handsim.get("steps").asLong());
+        assertEquals(500, ode4j.get("steps").asLong());
+        assertEquals(handsim.get("steps_per_s").asDouble() / ode4j.get("steps_per_s").asDouble(), out.get("ratio_steps_per_s").asDouble(),
+                1e-12);
+        // each world ran its own stepper: quickStep allocates tens of KB a step (docs/design.md),
+        // handsim's step nothing once compiled (here still cold: under the 1 KB)
+        assertTrue(handsim.get("solver_bytes_per_step").asDouble() < 1000, out.toString());
+        assertTrue(ode4j.get("solver_bytes_per_step").asDouble() > 10_000, out.toString());
+        JsonNode rounds = out.get("round_ratios");
+        double min = rounds.get("min").asDouble(), max = rounds.get("max").asDouble();
+        for (String q : new String[] {"q1", "median", "q3"}) {
+            double v = rounds.get(q).asDouble();
+            assertTrue(v >= min && v <= max && min > 0, q + " " + v + " outside [" + min + ", " + max + "]");
+        }
     }
 }
