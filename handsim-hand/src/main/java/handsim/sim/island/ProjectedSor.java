@@ -21,11 +21,13 @@ import java.util.Arrays;
  * fc = M^-1 J^T lambda at once. Rows without friction bounds go first; every 8th iteration from
  * the 8th the order is shuffled with the world's generator.
  *
- * <p>Until the first shuffle the rows are swept level by level ({@link #scheduleByLevel}): an
- * order with the packed order's bits in which consecutive rows seldom share a body, so that
- * the CPU works on several rows at once rather than waiting for each row's J fc on the fc its
- * predecessor changed. Products are accumulated with fused multiply-adds ({@link Math#fma}: one
- * rounding, the CPU's FMA instruction where it has one).
+ * <p>Until the first shuffle, consecutive rows of the same two bodies (a joint's rows, a contact's
+ * friction pair) are swept as a block: the two bodies' fc is read once at the block's start,
+ * kept in local variables while each row of the block takes J fc from it and adds its impulse
+ * change, and written back once at the block's end. That is the same Gauss-Seidel update, row
+ * after row; it spares each row the store and reload of the fc its predecessor changed. Products
+ * are accumulated with fused multiply-adds ({@link Math#fma}: one rounding, the CPU's FMA
+ * instruction where it has one).
  */
 final class ProjectedSor {
 
@@ -53,17 +55,13 @@ final class ProjectedSor {
     private int[] order = new int[0];
     /** Each assembled row's index in {@link #data}. */
     private int[] position = new int[0];
-    /** The packed rows level by level (see {@link #scheduleByLevel}), the order of the sweeps before the first shuffle. */
-    private int[] schedule = new int[0];
-    private int[] level = new int[0];
-    private int[] levelStart = new int[1];
-    /** Per body, the level after the last scheduled row that touches it. */
-    private final int[] bodyLevel;
+    /** Block b holds packed rows [blockStart[b], blockStart[b + 1]). */
+    private int[] blockStart = new int[1];
+    private int blockCount;
 
     ProjectedSor(int bodyCount) {
         fc = new double[6 * bodyCount];
         free = new double[6 * bodyCount];
-        bodyLevel = new int[bodyCount];
     }
 
     /** The free motion of every body the rows may touch, once per step. */
@@ -104,7 +102,7 @@ final class ProjectedSor {
             scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
             kind[k] = kind(d, STRIDE * k, meta[3 * k + 1] >= 0);
         }
-        scheduleByLevel(m);
+        findBlocks(m);
         boolean shuffled = false;
         for (int it = 0; it < iterations; it++) {
             if (it >= SHUFFLE_PERIOD && it % SHUFFLE_PERIOD == 0) {
@@ -116,67 +114,28 @@ final class ProjectedSor {
                 }
                 shuffled = true;
             }
-            sweep(shuffled ? order : schedule, m);
+            if (shuffled) {
+                sweep(m);
+            } else {
+                sweepBlocks();
+            }
         }
     }
 
-    /**
-     * The packed rows ordered by level, each row's level one past the last level of the rows before
-     * it that share a body with it (in packed order), rows of one level in packed order. Rows that
-     * share no body commute in a Gauss-Seidel sweep (each reads and writes only its bodies' fc and
-     * its own and its normal row's impulse, and a normal row shares its friction rows' bodies), so
-     * this order gives the packed order's bits; the rows of a level are independent, and the CPU
-     * overlaps them instead of waiting for each row's predecessor.
-     */
-    private void scheduleByLevel(int m) {
-        Arrays.fill(bodyLevel, 0);
-        int levels = 0;
-        for (int k = 0; k < m; k++) {
-            int a = meta[3 * k] / 6;
-            int b = meta[3 * k + 1];
-            int l = bodyLevel[a];
-            if (b >= 0) {
-                l = Math.max(l, bodyLevel[b / 6]);
+    /** The blocks of the packed order: runs of rows of the same two bodies. */
+    private void findBlocks(int m) {
+        if (blockStart.length < m + 1) {
+            blockStart = new int[order.length + 1];
+        }
+        blockCount = 0;
+        int start = 0;
+        for (int k = 1; k <= m; k++) {
+            if (k == m || meta[3 * k] != meta[3 * start] || meta[3 * k + 1] != meta[3 * start + 1]) {
+                blockStart[blockCount++] = start;
+                start = k;
             }
-            level[k] = l;
-            bodyLevel[a] = l + 1;
-            if (b >= 0) {
-                bodyLevel[b / 6] = l + 1;
-            }
-            levels = Math.max(levels, l + 1);
         }
-        if (levelStart.length < levels + 1) {
-            levelStart = new int[Math.max(levels + 1, 2 * levelStart.length)];
-        }
-        Arrays.fill(levelStart, 0, levels + 1, 0);
-        for (int k = 0; k < m; k++) {
-            levelStart[level[k] + 1]++;
-        }
-        for (int l = 0; l < levels; l++) {
-            levelStart[l + 1] += levelStart[l];
-        }
-        for (int k = 0; k < m; k++) {
-            schedule[levelStart[level[k]]++] = k;
-        }
-    }
-
-    /**
-     * The rows [start, end) as the sweeps before the first shuffle take them (each an index from
-     * start, in assembly order), for tests.
-     */
-    int[] firstSweepOrder(ConstraintRows rows, int start, int end) {
-        int m = end - start;
-        pack(rows, start, m);
-        scheduleByLevel(m);
-        int[] assembled = new int[m];
-        for (int i = 0; i < m; i++) {
-            assembled[position[i]] = i;
-        }
-        int[] out = new int[m];
-        for (int k = 0; k < m; k++) {
-            out[k] = assembled[schedule[k]];
-        }
-        return out;
+        blockStart[blockCount] = m;
     }
 
     /**
@@ -192,8 +151,6 @@ final class ProjectedSor {
             lambda = new double[n];
             meta = new int[3 * n];
             kind = new int[n];
-            schedule = new int[n];
-            level = new int[n];
             data = new double[STRIDE * n];
         }
         int frictionRows = 0;
@@ -264,11 +221,95 @@ final class ProjectedSor {
     }
 
     /**
-     * One Gauss-Seidel sweep over the island's rows in the given order, row by row. Each body's fc
-     * is read once; a row whose bodies its predecessor changed waits for that fc, and the orders
-     * swept (levels, then shuffles) make such neighbours rare.
+     * One Gauss-Seidel sweep over the packed rows in their order, block by block (see the class
+     * comment): the block's bodies' fc read once, held in locals through the block's rows, and
+     * written once after it.
      */
-    private void sweep(int[] order, int m) {
+    private void sweepBlocks() {
+        double[] d = data;
+        double[] lambda = this.lambda;
+        double[] f = fc;
+        for (int bl = 0; bl < blockCount; bl++) {
+            int s = blockStart[bl];
+            int e = blockStart[bl + 1];
+            int a = meta[3 * s];
+            int b = meta[3 * s + 1];
+            double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
+            double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
+            if (b >= 0) {
+                c0 = f[b];
+                c1 = f[b + 1];
+                c2 = f[b + 2];
+                c3 = f[b + 3];
+                c4 = f[b + 4];
+                c5 = f[b + 5];
+            }
+            for (int k = s; k < e; k++) {
+                int o = STRIDE * k;
+                int kd = kind[k];
+                double sum = dot(kd, d, o, a0, a1, a2, a3, a4, a5);
+                if (b >= 0) {
+                    sum += dot(kd, d, o + J2, c0, c1, c2, c3, c4, c5);
+                }
+                double old = lambda[k];
+                double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
+                double lo, hi;
+                int normal = meta[3 * k + 2];
+                if (normal >= 0) {
+                    hi = Math.abs(d[o + HI] * lambda[normal]);
+                    lo = -hi;
+                } else {
+                    lo = d[o + LO];
+                    hi = d[o + HI];
+                }
+                double next = old + delta;
+                if (next < lo) {
+                    delta = lo - old;
+                    next = lo;
+                } else if (next > hi) {
+                    delta = hi - old;
+                    next = hi;
+                }
+                lambda[k] = next;
+                a0 = Math.fma(delta, d[o + IMJ1], a0);
+                a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                if (b >= 0) {
+                    c0 = Math.fma(delta, d[o + IMJ2], c0);
+                    c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                    c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                    c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                    c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                    c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                }
+            }
+            f[a] = a0;
+            f[a + 1] = a1;
+            f[a + 2] = a2;
+            f[a + 3] = a3;
+            f[a + 4] = a4;
+            f[a + 5] = a5;
+            if (b >= 0) {
+                f[b] = c0;
+                f[b + 1] = c1;
+                f[b + 2] = c2;
+                f[b + 3] = c3;
+                f[b + 4] = c4;
+                f[b + 5] = c5;
+            }
+        }
+    }
+
+    /**
+     * One Gauss-Seidel sweep over the island's rows in {@link #order}, row by row (the shuffled
+     * iterations). The two bodies' parts of J fc are summed pairwise rather than left to right,
+     * and each body's fc is read once: the sweep is bound by the latency of this sum, each row
+     * waiting for the fc its predecessor changed.
+     */
+    private void sweep(int m) {
         double[] d = data;
         double[] lambda = this.lambda;
         int[] meta = this.meta;
