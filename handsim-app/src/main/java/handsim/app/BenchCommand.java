@@ -19,7 +19,10 @@ import handsim.task.HeldBallScenario;
 import handsim.task.ServoLoop;
 import handsim.taskdef.HeightDefinition;
 import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BrokenBarrierException;
@@ -72,10 +75,14 @@ final class BenchCommand implements Callable<Integer> {
     String stepper;
 
     @Option(names = "--compare",
-            description = "run handsim's step and ode4j's quickStep in one process, one world each on the same seeds, "
-                    + "alternating slices of --slice simulated seconds, and report each and the ratio of their steps/s "
+            description = "run handsim's step and ode4j's quickStep side by side, each in a JVM of its own on the same seeds, "
+                    + "taking turns of --slice simulated seconds, and report each and the ratio of their steps/s "
                     + "(a slow spell of the machine then falls on both alike); loop scenario, one worker")
     boolean compare;
+
+    /** A {@code --compare} child: runs one world's slices as its parent asks on stdin (see {@link #serveSlices}). */
+    @Option(names = "--serve-slices", hidden = true)
+    boolean serveSlices;
 
     @Option(names = "--slice", paramLabel = "S", defaultValue = "0.5",
             description = "with --compare: simulated seconds of one stepper before the other takes over (default: ${DEFAULT-VALUE})")
@@ -139,8 +146,11 @@ final class BenchCommand implements Callable<Integer> {
         SimConfig iterated = iterations != null ? base.withSolverIterations(iterations) : base;
         SimConfig config = stepper != null ? iterated.withStepper(SimConfig.Stepper.of(stepper)) : iterated;
         ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
+        if (serveSlices) {
+            return serveSlices(model, config);
+        }
         if (compare) {
-            return compare(model, config, thrown, commit);
+            return compare(config, thrown, commit);
         }
 
         System.out.printf("bench %s: %d worker%s, %.0f s warm-up + %.0f s measured per worker, h = %.1f ms, "
@@ -278,38 +288,36 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /**
-     * {@code --compare}: one world per stepper on the same seeds, in this thread; each warms up,
-     * then they take turns of {@code --slice} simulated seconds (which goes first alternates) until
-     * each has run {@code --seconds}. A round is one slice of each; its ratio of steps/s is
-     * measured within a second or so, so a slow spell of the machine falls on both.
+     * {@code --compare}: one JVM per stepper (this command again, with {@code --serve-slices}),
+     * each running one world on the same seeds; both warm up, then they take turns of {@code
+     * --slice} simulated seconds, which goes first alternating, until each has run {@code
+     * --seconds}. Only one runs at a time, the other waits on its input. A round is one slice of
+     * each; its ratio of steps/s is measured within a second or so, so a slow spell of the machine
+     * falls on both, and neither world's code shares its JVM, or the JIT's view of it, with the other's.
      */
-    private Integer compare(HandModel model, SimConfig config, ObjectSpec thrown, String commit) throws Exception {
+    private Integer compare(SimConfig config, ObjectSpec thrown, String commit) throws Exception {
         SimConfig.Stepper[] steppers = {SimConfig.Stepper.HANDSIM, SimConfig.Stepper.ODE4J};
         double h = config.timeStep();
         long sliceSteps = Math.round(slice / h);
         long measuredSteps = Math.round(seconds / h);
         int rounds = (int) ((measuredSteps + sliceSteps - 1) / sliceSteps);
-        System.out.printf("bench loop, compared: handsim's step and ode4j's quickStep, one world each, %.0f s warm-up, then "
+        System.out.printf("bench loop, compared: handsim's step and ode4j's quickStep, a JVM each, %.0f s warm-up, then "
                 + "%d rounds of %.2f s each, h = %.1f ms, %d iterations%n", warmup, rounds, slice, h * 1e3, config.solverIterations());
-        Simulator[] sims = new Simulator[2];
+        SliceServer[] servers = new SliceServer[2];
         try {
-            Loops[] loops = new Loops[2];
-            long[] start = new long[2];
             for (int k = 0; k < 2; k++) {
-                sims[k] = Wiring.isolatedSimulator(model, config.withStepper(steppers[k]));
-                loops[k] = new Loops(sims[k], episodeOptions.seed);
-                loops[k].runTo(Math.round(warmup / h));
-                start[k] = loops[k].done;
-                loops[k].resetCounts();
+                servers[k] = new SliceServer(childCommand(steppers[k]));
             }
-            java.util.List<java.util.List<Run>> slices = List.of(new java.util.ArrayList<>(), new java.util.ArrayList<>());
+            for (SliceServer server : servers) {
+                server.awaitReady();
+            }
+            List<List<Run>> slices = List.of(new ArrayList<>(), new ArrayList<>());
             double[] roundRatios = new double[rounds];
             for (int r = 0; r < rounds; r++) {
+                long n = Math.min(sliceSteps, measuredSteps - r * sliceSteps);
                 for (int turn = 0; turn < 2; turn++) {
                     int k = (r + turn) % 2;
-                    Meter meter = new Meter(sims[k], loops[k].done);
-                    loops[k].runTo(start[k] + Math.min(measuredSteps, (r + 1) * sliceSteps));
-                    slices.get(k).add(meter.finish(loops[k].done, 0, 0, 0, false, Double.NaN));
+                    slices.get(k).add(servers[k].slice(n));
                 }
                 roundRatios[r] = rate(slices.get(0).get(r)) / rate(slices.get(1).get(r));
             }
@@ -323,14 +331,15 @@ final class BenchCommand implements Callable<Integer> {
             out.put("rounds", rounds);
             ObjectNode[] summaries = new ObjectNode[2];
             for (int k = 0; k < 2; k++) {
-                Run run = sequence(slices.get(k), loops[k]);
+                int[] counts = servers[k].end();
+                Run run = sequence(slices.get(k), counts);
                 summaries[k] = summarize(List.of(run), config);
                 out.set(steppers[k].label(), summaries[k]);
                 print(steppers[k].label(), summaries[k]);
             }
             double ratio = summaries[0].get("steps_per_s").asDouble() / summaries[1].get("steps_per_s").asDouble();
             double cpuRatio = summaries[0].get("steps_per_cpu_s").asDouble() / summaries[1].get("steps_per_cpu_s").asDouble();
-            java.util.Arrays.sort(roundRatios);
+            Arrays.sort(roundRatios);
             double q1 = quantile(roundRatios, 0.25), median = quantile(roundRatios, 0.5), q3 = quantile(roundRatios, 0.75);
             out.put("ratio_steps_per_s", ratio);
             out.put("ratio_steps_per_cpu_s", cpuRatio);
@@ -350,10 +359,120 @@ final class BenchCommand implements Callable<Integer> {
             }
             return summaries[0].get("loops_caught").asInt() > 0 && summaries[1].get("loops_caught").asInt() > 0 ? 0 : 1;
         } finally {
-            for (Simulator sim : sims) {
-                if (sim != null) {
-                    sim.close();
+            for (SliceServer server : servers) {
+                if (server != null) {
+                    server.close();
                 }
+            }
+        }
+    }
+
+    /** This JVM's command line for a {@code --compare} child stepping with {@code stepper}. */
+    private List<String> childCommand(SimConfig.Stepper stepper) {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        for (String arg : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            // the JVM's settings (heap, collector, handsim.home), not a recording or a debugger of this one
+            if (!arg.startsWith("-XX:StartFlightRecording") && !arg.startsWith("-agentlib") && !arg.startsWith("-javaagent")) {
+                command.add(arg);
+            }
+        }
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), Main.class.getName(), "bench", "--serve-slices",
+                "--stepper", stepper.label(), "--warmup", Double.toString(warmup), "--seed", Long.toString(episodeOptions.seed),
+                "--object", episodeOptions.object, "--throw-height", Double.toString(throwHeight)));
+        if (iterations != null) {
+            command.addAll(List.of("--iterations", Integer.toString(iterations)));
+        }
+        return command;
+    }
+
+    /**
+     * The child's side of {@code --compare}: one world warms up and says {@code ready}; then each
+     * line {@code run N} runs N more steps and answers with their measurement, and {@code end}
+     * answers with the episodes and catches since the warm-up. Nothing else goes to stdout.
+     */
+    private Integer serveSlices(HandModel model, SimConfig config) throws Exception {
+        try (Simulator sim = Wiring.isolatedSimulator(model, config)) {
+            Loops loops = new Loops(sim, episodeOptions.seed);
+            loops.runTo(Math.round(warmup / config.timeStep()));
+            loops.resetCounts();
+            long target = loops.done;
+            java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(System.in, StandardCharsets.UTF_8));
+            System.out.println(SliceServer.READY);
+            for (String line; (line = in.readLine()) != null; ) {
+                if (line.startsWith(SliceServer.RUN)) {
+                    target += Long.parseLong(line.substring(SliceServer.RUN.length()));
+                    Meter meter = new Meter(sim, loops.done);
+                    loops.runTo(target);
+                    System.out.println(SliceServer.format(meter.finish(loops.done, 0, 0, 0, false, Double.NaN)));
+                } else if (line.equals(SliceServer.END)) {
+                    System.out.println(SliceServer.END + " " + loops.episodes + " " + loops.caught + " " + loops.firstCatches);
+                    return 0;
+                }
+            }
+            return 1; // the parent went away
+        }
+    }
+
+    /** A {@code --compare} child process, spoken to line by line (see {@link #serveSlices}). */
+    private static final class SliceServer implements AutoCloseable {
+        static final String READY = "ready", RUN = "run ", SLICE = "slice ", END = "end";
+        private final Process process;
+        private final java.io.BufferedReader from;
+        private final java.io.PrintStream to;
+
+        SliceServer(List<String> command) throws java.io.IOException {
+            process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
+            from = new java.io.BufferedReader(new java.io.InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
+            to = new java.io.PrintStream(process.getOutputStream(), true, StandardCharsets.UTF_8);
+        }
+
+        void awaitReady() throws java.io.IOException {
+            answer(READY);
+        }
+
+        Run slice(long steps) throws java.io.IOException {
+            to.println(RUN + steps);
+            String[] f = answer(SLICE).substring(SLICE.length()).split(" ");
+            StepAccounting engine = new StepAccounting();
+            engine.add(Long.parseLong(f[5]), Long.parseLong(f[6]), Long.parseLong(f[7]), Long.parseLong(f[8]), Long.parseLong(f[9]));
+            return new Run(Long.parseLong(f[0]), Double.parseDouble(f[1]), Double.parseDouble(f[2]), Double.parseDouble(f[3]),
+                    Long.parseLong(f[4]), engine, 0, 0, 0, false, Double.NaN);
+        }
+
+        /** Episodes, catches and first catches since the warm-up. */
+        int[] end() throws java.io.IOException {
+            to.println(END);
+            String[] f = answer(END).split(" ");
+            return new int[] {Integer.parseInt(f[1]), Integer.parseInt(f[2]), Integer.parseInt(f[3])};
+        }
+
+        static String format(Run r) {
+            StepAccounting e = r.engine();
+            return SLICE + r.steps() + " " + r.wallS() + " " + r.cpuS() + " " + r.stolenS() + " " + r.bytes() + " " + e.stepNanos() + " "
+                    + e.collisionNanos() + " " + e.solverNanos() + " " + e.engineBytes() + " " + e.solverBytes();
+        }
+
+        /** The child's next line starting with {@code prefix}, other lines skipped. */
+        private String answer(String prefix) throws java.io.IOException {
+            for (String line; (line = from.readLine()) != null; ) {
+                if (line.startsWith(prefix)) {
+                    return line;
+                }
+            }
+            throw new IllegalStateException("the bench's child process ended without answering (" + prefix.strip() + "): see its output above");
+        }
+
+        @Override
+        public void close() {
+            to.close();
+            try {
+                if (!process.waitFor(30, java.util.concurrent.TimeUnit.SECONDS)) {
+                    process.destroyForcibly();
+                }
+            } catch (InterruptedException e) {
+                process.destroyForcibly();
+                Thread.currentThread().interrupt();
             }
         }
     }
@@ -370,8 +489,8 @@ final class BenchCommand implements Callable<Integer> {
         return sorted[i] + (x - i) * (sorted[j] - sorted[i]);
     }
 
-    /** Slices of one world run one after another, as one run; episodes and catches from its loops. */
-    private static Run sequence(List<Run> slices, Loops loops) {
+    /** Slices of one world run one after another, as one run, with its episodes, catches and first catches. */
+    private static Run sequence(List<Run> slices, int[] counts) {
         long steps = 0, bytes = 0;
         double wall = 0, cpu = 0, stolen = 0;
         StepAccounting engine = new StepAccounting();
@@ -384,7 +503,7 @@ final class BenchCommand implements Callable<Integer> {
             StepAccounting e = r.engine();
             engine.add(e.stepNanos(), e.collisionNanos(), e.solverNanos(), e.engineBytes(), e.solverBytes());
         }
-        return new Run(steps, wall, cpu, stolen, bytes, engine, loops.episodes, loops.caught, loops.firstCatches, false, Double.NaN);
+        return new Run(steps, wall, cpu, stolen, bytes, engine, counts[0], counts[1], counts[2], false, Double.NaN);
     }
 
     /** The arm holds the ball thrown into its palm: the foundation's benchmark. */
