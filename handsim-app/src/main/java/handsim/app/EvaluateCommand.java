@@ -79,6 +79,11 @@ final class EvaluateCommand implements Callable<Integer> {
             description = "the launch velocity nudge of --copies (m/s, default: ${DEFAULT-VALUE})")
     double nudge;
 
+    @Option(names = "--stepper", paramLabel = "S",
+            description = "the constrained step: handsim (handsim's own) or ode4j (ode4j's quickStep) (default: configs/sim.json's "
+                    + "solver.stepper); recorded in the spec with the physics' config")
+    String stepper;
+
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON, with its provenance (commit, "
             + "command line, SHA-256 of every config, model and policy file read); while the run goes, each finished episode is "
             + "kept in FILE.episodes.jsonl, and the same command run again after a kill runs only the episodes not yet finished")
@@ -110,7 +115,8 @@ final class EvaluateCommand implements Callable<Integer> {
 
     /** The options a recorded run's spec decides: refused beside --spec. */
     private static final List<String> RECORDED = List.of("--task", "--controller", "--object", "--seed", "--policy", "--opening-policy",
-            "--rest-policy", "--plan", "--task-set", "--loops", "--episodes", "--tests", "--throw-height", "--goals", "--copies", "--nudge");
+            "--rest-policy", "--plan", "--task-set", "--loops", "--episodes", "--tests", "--throw-height", "--goals", "--copies", "--nudge",
+            "--stepper");
 
     @Override
     public Integer call() throws Exception {
@@ -161,8 +167,11 @@ final class EvaluateCommand implements Callable<Integer> {
     private EvaluateSpec resolve() {
         if (specFile == null) {
             who.validate();
+            if (stepper != null && !stepper.equals("handsim") && !stepper.equals("ode4j")) {
+                throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
+            }
             return EvaluateSpec.of(who, episodeOptions.object, episodeOptions.seed, loopsOption, episodes, tests, throwHeight, goals,
-                    copies, nudge);
+                    copies, nudge, stepper);
         }
         for (String option : RECORDED) {
             if (spec.commandLine().getParseResult().hasMatchedOption(option)) {
@@ -186,6 +195,7 @@ final class EvaluateCommand implements Callable<Integer> {
             out.put("rest_policy", rest != null ? rest.toString() : null);
         }
         out.put("object", run.object());
+        out.put("stepper", run.configs().sim().stepper().label());
         out.set("controller_parts", run.controllerParts());
         if (!run.taskSet().isEmpty()) {
             out.set("task_set", run.toTaskSetJson());

@@ -40,11 +40,19 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
         Double throwHeight, Json goals, Integer copies, double nudge, Map<String, String> taskSet, Map<String, Path> policies,
         RunConfigs configs) {
 
-    /** The spec of a run given by its options; the defaults come from the task's and the evaluation's configs. */
+    /**
+     * The spec of a run given by its options; the defaults come from the task's and the evaluation's
+     * configs. {@code stepper} (null: configs/sim.json's) overrides the physics' {@code solver.stepper}.
+     */
     static EvaluateSpec of(ControllerOptions who, String object, long seed, Integer loops, int episodes, int tests, Double throwHeight,
-            Path goals, Integer copies, double nudge) {
+            Path goals, Integer copies, double nudge, String stepper) {
         Map<String, String> taskSet = who.taskSetFields();
-        RunConfigs configs = new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file(who.task()), taskSet)));
+        Map<String, Map<String, String>> overrides = new LinkedHashMap<>();
+        overrides.put(TaskDefinitions.file(who.task()), taskSet);
+        if (stepper != null) { // applied to the physics' document, which the record then holds as read
+            overrides.put(RunConfigs.SIM, Map.of("solver.stepper", stepper));
+        }
+        RunConfigs configs = new RunConfigs(ConfigSet.fromFiles(overrides));
         String task = who.task();
         int resolvedLoops = loops != null ? loops : copies != null ? configs.evaluation().sensitivityThrows()
                 : configs.task(task).defaultEvaluationLoops();

@@ -529,6 +529,27 @@ class CommandsTest {
     }
 
     @Test
+    void theStepperChosenForAnEvaluationIsRecordedInItsSpecAndRepeated(@TempDir Path dir) throws Exception {
+        // --stepper overrides configs/sim.json's solver.stepper for this run: the summary names the step, the spec holds the
+        // physics' document as read, and the run repeated from the spec alone steps with it again, key by key the same
+        Path first = dir.resolve("first.json");
+        runPrinting("evaluate", "--task", "height", "--episodes", "1", "--loops", "1", "--seed", "1", "--workers", "1", "--stepper", "handsim",
+                "--json", first.toString());
+        JsonNode recorded = Json.load(first).node();
+        assertEquals("handsim", recorded.get("stepper").asText());
+        assertEquals("handsim", recorded.get("spec").get("configs").get("configs/sim.json").get("solver").get("stepper").asText());
+        Path again = dir.resolve("again.json");
+        runPrinting("evaluate", "--spec", first.toString(), "--workers", "1", "--json", again.toString());
+        ObjectNode a = (ObjectNode) recorded.deepCopy(), b = (ObjectNode) Json.load(again).node().deepCopy();
+        for (ObjectNode o : List.of(a, b)) {
+            o.remove(List.of("provenance", "wall_s", "workers"));
+        }
+        assertEquals(a, b, "the same run, with handsim's step");
+        CliRun.of("evaluate", "--spec", first.toString(), "--stepper", "ode4j").assertRefused(2, "--stepper goes without --spec");
+        CliRun.of("evaluate", "--task", "height", "--stepper", "bullet").assertRefused(2, "--stepper must be handsim or ode4j", "bullet");
+    }
+
+    @Test
     void everyTasksSummaryReportsTheMotionQualityUnderTheSameKeys(@TempDir Path dir) throws Exception {
         // joint-limit excess, penetration and peak torque ratio over all loops (paper sec. 4.1), for height, box and flip alike
         List<String[]> runs = List.of(new String[] {"--task", "height", "--episodes", "1", "--loops", "1"},
