@@ -129,9 +129,17 @@ final class TrainCommand implements Callable<Integer> {
         }
     }
 
-    /** The project's configs with the fields of the task's file that the run changes ({@link TrainConfig.Run#taskSet}). */
+    /**
+     * The project's configs with the fields of the task's file that the run changes ({@link
+     * TrainConfig.Run#taskSet}) and the physics' stepper it names ({@link TrainConfig.Run#stepper}).
+     */
     static RunConfigs configs(TrainConfig.Run run) {
-        return new RunConfigs(ConfigSet.fromFiles(Map.of(TaskDefinitions.file(run.task()), run.taskSet())));
+        Map<String, Map<String, String>> overrides = new java.util.LinkedHashMap<>();
+        overrides.put(TaskDefinitions.file(run.task()), run.taskSet());
+        if (run.stepper() != null) {
+            overrides.put(RunConfigs.SIM, Map.of("solver.stepper", run.stepper()));
+        }
+        return new RunConfigs(ConfigSet.fromFiles(overrides));
     }
 
     /** The environments of a run: its task (as {@code configs} define it) and object with the controller, launch and episode configs. */

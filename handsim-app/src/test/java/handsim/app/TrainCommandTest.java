@@ -8,6 +8,7 @@ import handsim.config.Home;
 import handsim.config.Json;
 import handsim.control.CatchStyle;
 import handsim.control.ControllerConfig;
+import handsim.spec.RunConfigs;
 import handsim.train.TrainConfig;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -32,6 +33,28 @@ class TrainCommandTest {
         ControllerConfig resting = TrainCommand.environments(withRest.run(), TrainCommand.configs(withRest.run())).tasks().get()
                 .controller(base);
         assertTrue(resting.armRest().isPresent(), "run.taskSet without the arm rest's null: the task's arm rest (configs/tasks/flip.json)");
+    }
+
+    @Test
+    void aRunsStepperOverridesThePhysicsConfigsAndABadOneIsRefusedByName() {
+        // run.stepper (optional): the constrained step of the run's physics, in place of configs/sim.json's solver.stepper
+        ObjectNode file = (ObjectNode) Json.load(Home.resolve("configs/train/height.json")).node().deepCopy();
+        TrainConfig plain = TrainConfig.parse(Json.of("height.json", file));
+        assertEquals(null, plain.run().stepper());
+        assertEquals(Wiring.simConfig().stepper(), TrainCommand.configs(plain.run()).sim().stepper(), "absent: configs/sim.json's");
+        for (String stepper : new String[] {"handsim", "ode4j"}) {
+            ((ObjectNode) file.get("run")).put("stepper", stepper);
+            TrainConfig run = TrainConfig.parse(Json.of("height.json", file));
+            assertEquals(stepper, TrainCommand.configs(run.run()).sim().stepper().label());
+            // recorded in the run's spec as the physics' document read, which a resumed run replays
+            RunConfigs configs = TrainCommand.configs(run.run());
+            configs.sim();
+            assertEquals(stepper, configs.files().toJson().get(RunConfigs.SIM).get("solver").get("stepper").asText());
+        }
+        ((ObjectNode) file.get("run")).put("stepper", "bullet");
+        var e = org.junit.jupiter.api.Assertions.assertThrows(handsim.config.ConfigException.class,
+                () -> TrainConfig.parse(Json.of("height.json", file)));
+        assertTrue(e.getMessage().contains("stepper") && e.getMessage().contains("bullet"), e.getMessage());
     }
 
     @Test

@@ -39,10 +39,12 @@ public record TrainConfig(Run run, LearnerConfig learner) {
      *     {@code evaluate --task-set} changes them ({@link handsim.config.Json#withOverrides}: dotted
      *     paths, JSON values, {@code null} leaves an optional field out); empty: the task as its
      *     file says
+     * @param stepper the constrained step the run's physics takes ({@code handsim} or {@code ode4j}),
+     *     overriding configs/sim.json's {@code solver.stepper}; null when absent: the file's
      */
     public record Run(String name, String task, String object, int workers, int firstCatchAttempts, double divergedReward,
             double progressSeconds, StateVector.Encoding state, SpinShaping spinShaping,
-            boolean endAtFailedThrow, Map<String, String> taskSet) {
+            boolean endAtFailedThrow, Map<String, String> taskSet, String stepper) {
 
         public Run {
             taskSet = Collections.unmodifiableMap(new LinkedHashMap<>(taskSet));
@@ -53,7 +55,7 @@ public record TrainConfig(Run run, LearnerConfig learner) {
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.bool("endAtFailedThrow", false), taskSet(j));
+                    j.bool("endAtFailedThrow", false), taskSet(j), j.has("stepper") ? j.choice("stepper", "handsim", "ode4j") : null);
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }
@@ -103,6 +105,9 @@ public record TrainConfig(Run run, LearnerConfig learner) {
         }
         if (!run.endAtFailedThrow()) {
             runNode.remove("endAtFailedThrow");
+        }
+        if (run.stepper() == null) {
+            runNode.remove("stepper");
         }
         ObjectNode taskSet = runNode.putObject("taskSet");
         run.taskSet().forEach((key, value) -> taskSet.set(key, Json.parse("taskSet." + key, value).node()));
