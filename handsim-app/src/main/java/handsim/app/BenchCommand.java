@@ -18,6 +18,10 @@ import handsim.task.HeightTask;
 import handsim.task.HeldBallScenario;
 import handsim.task.ServoLoop;
 import handsim.taskdef.HeightDefinition;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -28,6 +32,7 @@ import java.util.Map;
 import java.util.concurrent.BrokenBarrierException;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CyclicBarrier;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -397,7 +402,7 @@ final class BenchCommand implements Callable<Integer> {
             loops.runTo(Math.round(warmup / config.timeStep()));
             loops.resetCounts();
             long target = loops.done;
-            java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(System.in, StandardCharsets.UTF_8));
+            BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
             System.out.println(SliceServer.READY);
             for (String line; (line = in.readLine()) != null; ) {
                 if (line.startsWith(SliceServer.RUN)) {
@@ -418,20 +423,20 @@ final class BenchCommand implements Callable<Integer> {
     private static final class SliceServer implements AutoCloseable {
         static final String READY = "ready", RUN = "run ", SLICE = "slice ", END = "end";
         private final Process process;
-        private final java.io.BufferedReader from;
-        private final java.io.PrintStream to;
+        private final BufferedReader from;
+        private final PrintStream to;
 
-        SliceServer(List<String> command) throws java.io.IOException {
+        SliceServer(List<String> command) throws IOException {
             process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
-            from = new java.io.BufferedReader(new java.io.InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
-            to = new java.io.PrintStream(process.getOutputStream(), true, StandardCharsets.UTF_8);
+            from = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
+            to = new PrintStream(process.getOutputStream(), true, StandardCharsets.UTF_8);
         }
 
-        void awaitReady() throws java.io.IOException {
+        void awaitReady() throws IOException {
             answer(READY);
         }
 
-        Run slice(long steps) throws java.io.IOException {
+        Run slice(long steps) throws IOException {
             to.println(RUN + steps);
             String[] f = answer(SLICE).substring(SLICE.length()).split(" ");
             StepAccounting engine = new StepAccounting();
@@ -441,7 +446,7 @@ final class BenchCommand implements Callable<Integer> {
         }
 
         /** Episodes, catches and first catches since the warm-up. */
-        int[] end() throws java.io.IOException {
+        int[] end() throws IOException {
             to.println(END);
             String[] f = answer(END).split(" ");
             return new int[] {Integer.parseInt(f[1]), Integer.parseInt(f[2]), Integer.parseInt(f[3])};
@@ -454,7 +459,7 @@ final class BenchCommand implements Callable<Integer> {
         }
 
         /** The child's next line starting with {@code prefix}, other lines skipped. */
-        private String answer(String prefix) throws java.io.IOException {
+        private String answer(String prefix) throws IOException {
             for (String line; (line = from.readLine()) != null; ) {
                 if (line.startsWith(prefix)) {
                     return line;
@@ -467,7 +472,7 @@ final class BenchCommand implements Callable<Integer> {
         public void close() {
             to.close();
             try {
-                if (!process.waitFor(30, java.util.concurrent.TimeUnit.SECONDS)) {
+                if (!process.waitFor(30, TimeUnit.SECONDS)) {
                     process.destroyForcibly();
                 }
             } catch (InterruptedException e) {
@@ -482,7 +487,7 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** The q-quantile of sorted values, linear between neighbours. */
-    static double quantile(double[] sorted, double q) {
+    private static double quantile(double[] sorted, double q) {
         double x = q * (sorted.length - 1);
         int i = (int) Math.floor(x);
         int j = Math.min(i + 1, sorted.length - 1);

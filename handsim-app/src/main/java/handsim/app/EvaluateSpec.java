@@ -47,12 +47,7 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
     static EvaluateSpec of(ControllerOptions who, String object, long seed, Integer loops, int episodes, int tests, Double throwHeight,
             Path goals, Integer copies, double nudge, String stepper) {
         Map<String, String> taskSet = who.taskSetFields();
-        Map<String, Map<String, String>> overrides = new LinkedHashMap<>();
-        overrides.put(TaskDefinitions.file(who.task()), taskSet);
-        if (stepper != null) { // applied to the physics' document, which the record then holds as read
-            overrides.put(RunConfigs.SIM, Map.of("solver.stepper", stepper));
-        }
-        RunConfigs configs = new RunConfigs(ConfigSet.fromFiles(overrides));
+        RunConfigs configs = RunConfigs.ofProject(who.task(), taskSet, stepper);
         String task = who.task();
         int resolvedLoops = loops != null ? loops : copies != null ? configs.evaluation().sensitivityThrows()
                 : configs.task(task).defaultEvaluationLoops();

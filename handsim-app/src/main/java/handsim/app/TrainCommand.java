@@ -12,7 +12,6 @@ import handsim.spec.RunConfigs;
 import handsim.task.StateVector;
 import handsim.task.ThrowTask;
 import handsim.taskdef.TaskDefinition;
-import handsim.taskdef.TaskDefinitions;
 import handsim.train.ThrowEnv;
 import handsim.train.ThrowEnvFactory;
 import handsim.train.TrainConfig;
@@ -21,7 +20,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -134,12 +132,7 @@ final class TrainCommand implements Callable<Integer> {
      * TrainConfig.Run#taskSet}) and the physics' stepper it names ({@link TrainConfig.Run#stepper}).
      */
     static RunConfigs configs(TrainConfig.Run run) {
-        Map<String, Map<String, String>> overrides = new java.util.LinkedHashMap<>();
-        overrides.put(TaskDefinitions.file(run.task()), run.taskSet());
-        if (run.stepper() != null) {
-            overrides.put(RunConfigs.SIM, Map.of("solver.stepper", run.stepper()));
-        }
-        return new RunConfigs(ConfigSet.fromFiles(overrides));
+        return RunConfigs.ofProject(run.task(), run.taskSet(), run.stepper());
     }
 
     /** The environments of a run: its task (as {@code configs} define it) and object with the controller, launch and episode configs. */

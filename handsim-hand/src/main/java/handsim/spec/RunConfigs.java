@@ -18,6 +18,7 @@ import handsim.taskdef.HeightDefinition;
 import handsim.taskdef.TaskDefinition;
 import handsim.taskdef.TaskDefinitions;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.Function;
 
@@ -45,6 +46,20 @@ public final class RunConfigs {
 
     public RunConfigs(ConfigSet files) {
         this.files = files;
+    }
+
+    /**
+     * The project's files for a run of {@code task}: the fields of the task's file in {@code taskSet}
+     * changed, and the physics' {@code solver.stepper} set to {@code stepper} (null: the file's).
+     * The record ({@link #files}) then holds both documents as the run read them.
+     */
+    public static RunConfigs ofProject(String task, Map<String, String> taskSet, String stepper) {
+        Map<String, Map<String, String>> overrides = new LinkedHashMap<>();
+        overrides.put(TaskDefinitions.file(task), taskSet);
+        if (stepper != null) {
+            overrides.put(SIM, Map.of("solver.stepper", stepper));
+        }
+        return new RunConfigs(ConfigSet.fromFiles(overrides));
     }
 
     /** The documents behind these configs (what the run's record holds). */
