@@ -34,14 +34,6 @@ final class ProjectedSor {
     /** The shuffle period in iterations, ODE's. */
     private static final int SHUFFLE_PERIOD = 8;
 
-    /**
-     * A row's zero pattern, the same in J1 and J2 (linear 0-2, angular 3-5), which lets J x skip
-     * its zero terms with the dense sum's rounding (see {@link #dot}): any row, no linear part
-     * (a hinge's and a universal joint's angular rows, stops), and the three anchor rows of a
-     * ball (linear along x, y or z, angular without that axis).
-     */
-    static final int DENSE = 0, ANGULAR = 1, ANCHOR_X = 2, ANCHOR_Y = 3, ANCHOR_Z = 4;
-
     /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
     final double[] fc;
     /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
@@ -49,8 +41,6 @@ final class ProjectedSor {
     /** The island's rows in their first sweep order (see {@link #pack}), and per row its body offsets and normal row. */
     private double[] data = new double[0];
     private int[] meta = new int[0];
-    /** Each packed row's zero pattern in J ({@link #DENSE}, {@link #ANGULAR}, {@link #ANCHOR_X} ...). */
-    private int[] kind = new int[0];
     private double[] lambda = new double[0];
     private int[] order = new int[0];
     /** Each assembled row's index in {@link #data}. */
@@ -100,7 +90,6 @@ final class ProjectedSor {
         }
         for (int k = 0; k < m; k++) {
             scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
-            kind[k] = kind(d, STRIDE * k, meta[3 * k + 1] >= 0);
         }
         findBlocks(m);
         boolean shuffled = false;
@@ -150,7 +139,6 @@ final class ProjectedSor {
             position = new int[n];
             lambda = new double[n];
             meta = new int[3 * n];
-            kind = new int[n];
             data = new double[STRIDE * n];
         }
         int frictionRows = 0;
@@ -246,10 +234,9 @@ final class ProjectedSor {
             }
             for (int k = s; k < e; k++) {
                 int o = STRIDE * k;
-                int kd = kind[k];
-                double sum = dot(kd, d, o, a0, a1, a2, a3, a4, a5);
+                double sum = dot(d, o, a0, a1, a2, a3, a4, a5);
                 if (b >= 0) {
-                    sum += dot(kd, d, o + J2, c0, c1, c2, c3, c4, c5);
+                    sum += dot(d, o + J2, c0, c1, c2, c3, c4, c5);
                 }
                 double old = lambda[k];
                 double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
@@ -306,8 +293,7 @@ final class ProjectedSor {
     /**
      * One Gauss-Seidel sweep over the island's rows in {@link #order}, row by row (the shuffled
      * iterations). The two bodies' parts of J fc are summed pairwise rather than left to right,
-     * and each body's fc is read once: the sweep is bound by the latency of this sum, each row
-     * waiting for the fc its predecessor changed.
+     * and each body's fc is read once.
      */
     private void sweep(int m) {
         double[] d = data;
@@ -320,8 +306,7 @@ final class ProjectedSor {
             int a = meta[3 * i];
             int b = meta[3 * i + 1];
             double a0 = f[a], a1 = f[a + 1], a2 = f[a + 2], a3 = f[a + 3], a4 = f[a + 4], a5 = f[a + 5];
-            int kd = kind[i];
-            double s = dot(kd, d, o, a0, a1, a2, a3, a4, a5);
+            double s = dot(d, o, a0, a1, a2, a3, a4, a5);
             double c0 = 0, c1 = 0, c2 = 0, c3 = 0, c4 = 0, c5 = 0;
             if (b >= 0) {
                 c0 = f[b];
@@ -330,7 +315,7 @@ final class ProjectedSor {
                 c3 = f[b + 3];
                 c4 = f[b + 4];
                 c5 = f[b + 5];
-                s += dot(kd, d, o + J2, c0, c1, c2, c3, c4, c5);
+                s += dot(d, o + J2, c0, c1, c2, c3, c4, c5);
             }
             double old = lambda[i];
             double delta = (d[o + RHS] - old * d[o + CFM]) - s;
@@ -369,50 +354,8 @@ final class ProjectedSor {
         }
     }
 
-    /** The first of the sparse kinds whose zeros J1 (and J2, when {@code twoBodies}) of the row at {@code o} has, else {@link #DENSE}. */
-    static int kind(double[] d, int o, boolean twoBodies) {
-        int fits = fits(d, o + J1);
-        if (twoBodies) {
-            fits &= fits(d, o + J2);
-        }
-        for (int k = ANGULAR; k <= ANCHOR_Z; k++) {
-            if ((fits & (1 << k)) != 0) {
-                return k;
-            }
-        }
-        return DENSE;
-    }
-
-    /** The kinds (bit k for kind k) whose zeros the 6 numbers at {@code p} have. */
-    private static int fits(double[] d, int p) {
-        boolean x = d[p] == 0, y = d[p + 1] == 0, z = d[p + 2] == 0;
-        int fits = 1 << DENSE;
-        fits |= x && y && z ? 1 << ANGULAR : 0;
-        fits |= y && z && d[p + 3] == 0 ? 1 << ANCHOR_X : 0;
-        fits |= x && z && d[p + 4] == 0 ? 1 << ANCHOR_Y : 0;
-        fits |= x && y && d[p + 5] == 0 ? 1 << ANCHOR_Z : 0;
-        return fits;
-    }
-
-    /**
-     * J x of one body's part of a row (6 numbers of {@code d} from {@code o}), summed as the dense
-     * sum {@code fma(x1, j1, x0 j0) + fma(x3, j3, x2 j2) + fma(x5, j5, x4 j4)} with the terms a
-     * row of this kind has as zeros left out: a zero product adds nothing to a sum and an fma
-     * with a zero addend rounds once, so every kind gives the dense sum's bits (up to the sign
-     * of a zero), in fewer dependent operations.
-     */
-    static double dot(int kind, double[] d, int o, double x0, double x1, double x2, double x3, double x4, double x5) {
-        switch (kind) {
-            case ANGULAR:
-                return x3 * d[o + 3] + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
-            case ANCHOR_X:
-                return x0 * d[o] + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
-            case ANCHOR_Y:
-                return (x1 * d[o + 1] + x3 * d[o + 3]) + x5 * d[o + 5];
-            case ANCHOR_Z:
-                return Math.fma(x3, d[o + 3], x2 * d[o + 2]) + x4 * d[o + 4];
-            default:
-                return Math.fma(x1, d[o + 1], x0 * d[o]) + Math.fma(x3, d[o + 3], x2 * d[o + 2]) + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
-        }
+    /** J x of one body's part of a row (6 numbers of {@code d} from {@code o}), in three pairs. */
+    private static double dot(double[] d, int o, double x0, double x1, double x2, double x3, double x4, double x5) {
+        return Math.fma(x1, d[o + 1], x0 * d[o]) + Math.fma(x3, d[o + 3], x2 * d[o + 2]) + Math.fma(x5, d[o + 5], x4 * d[o + 4]);
     }
 }
