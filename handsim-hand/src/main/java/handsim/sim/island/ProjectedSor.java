@@ -146,12 +146,26 @@ final class ProjectedSor {
             frictionRows += rows.findex[i] >= 0 ? 1 : 0;
         }
         int head = 0, tail = m - frictionRows;
-        for (int i = start; i < start + m; i++) {
-            int p = rows.findex[i] < 0 ? head++ : tail++;
-            position[i - start] = p;
-            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p, STRIDE);
-            meta[3 * p] = 6 * rows.body1[i];
-            meta[3 * p + 1] = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
+        int end = start + m;
+        for (int i = start, next; i < end; i = next) {
+            // a run of rows that stay neighbours (all with or all without a friction index), copied at once
+            boolean friction = rows.findex[i] >= 0;
+            next = i + 1;
+            while (next < end && rows.findex[next] >= 0 == friction) {
+                next++;
+            }
+            int p0 = friction ? tail : head;
+            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p0, STRIDE * (next - i));
+            for (int r = i, p = p0; r < next; r++, p++) {
+                position[r - start] = p;
+                meta[3 * p] = 6 * rows.body1[r];
+                meta[3 * p + 1] = rows.body2[r] < 0 ? -1 : 6 * rows.body2[r];
+            }
+            if (friction) {
+                tail += next - i;
+            } else {
+                head += next - i;
+            }
         }
         for (int i = start; i < start + m; i++) {
             int f = rows.findex[i];
