@@ -134,9 +134,7 @@ final class BenchCommand implements Callable<Integer> {
         if (iterations != null && (iterations < 1 || iterations > 1000)) {
             throw new IllegalArgumentException("--iterations must be in [1, 1000], got " + iterations);
         }
-        if (stepper != null && !stepper.equals("handsim") && !stepper.equals("ode4j")) {
-            throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
-        }
+        SimConfig.Stepper chosen = stepper != null ? SimConfig.Stepper.named("--stepper", stepper) : null;
         if (compare && (stepper != null || workers != 1 || !scenario.equals("loop"))) {
             throw new IllegalArgumentException("--compare runs both steppers in the loop scenario on one worker: "
                     + "drop --stepper, --workers and --scenario");
@@ -149,7 +147,7 @@ final class BenchCommand implements Callable<Integer> {
         HandModel model = Wiring.model(null);
         SimConfig base = Wiring.simConfig();
         SimConfig iterated = iterations != null ? base.withSolverIterations(iterations) : base;
-        SimConfig config = stepper != null ? iterated.withStepper(SimConfig.Stepper.of(stepper)) : iterated;
+        SimConfig config = chosen != null ? iterated.withStepper(chosen) : iterated;
         ObjectSpec thrown = Wiring.object(scenario.equals("held-ball") ? "sphere" : episodeOptions.object);
         if (serveSlices) {
             return serveSlices(model, config);

@@ -9,6 +9,7 @@ import handsim.evaluation.TaskEvaluation;
 import handsim.report.Outputs;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
+import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.spec.RunConfigs;
 import handsim.taskdef.TaskDefinition;
@@ -167,8 +168,8 @@ final class EvaluateCommand implements Callable<Integer> {
     private EvaluateSpec resolve() {
         if (specFile == null) {
             who.validate();
-            if (stepper != null && !stepper.equals("handsim") && !stepper.equals("ode4j")) {
-                throw new IllegalArgumentException("--stepper must be handsim or ode4j, got " + stepper);
+            if (stepper != null) {
+                SimConfig.Stepper.named("--stepper", stepper); // refused here, before anything is written
             }
             return EvaluateSpec.of(who, episodeOptions.object, episodeOptions.seed, loopsOption, episodes, tests, throwHeight, goals,
                     copies, nudge, stepper);

@@ -42,12 +42,17 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
 
         /** The stepper named {@code label}. */
         public static Stepper of(String label) {
+            return named("stepper", label);
+        }
+
+        /** The stepper named {@code label}; a bad name is refused naming {@code where} it came from (a field, an option). */
+        public static Stepper named(String where, String label) {
             for (Stepper s : values()) {
                 if (s.label.equals(label)) {
                     return s;
                 }
             }
-            throw new IllegalArgumentException("stepper must be handsim or ode4j, got \"" + label + "\"");
+            throw new IllegalArgumentException(where + " must be handsim or ode4j, got \"" + label + "\"");
         }
     }
 
