@@ -13,12 +13,32 @@ final class ConstraintRows {
 
     static final int J1 = 0, J2 = 6, IMJ1 = 12, IMJ2 = 18, RHS = 24, CFM = 25, LO = 26, HI = 27, STRIDE = 28;
 
+    /**
+     * The zeros a row's J has by construction, the same in J1 and J2 (linear 0-2, angular 3-5):
+     * none; a ball's anchor row along x, y or z (one linear term, the angular term about that
+     * axis zero); no linear part (a hinge's and a universal joint's angular rows, the stops).
+     */
+    static final int DENSE = 0, ANCHOR_X = 1, ANCHOR_Y = 2, ANCHOR_Z = 3, ANGULAR = 4;
+
+    /** The indices (of 6) at which J1 and J2 of a row of {@code shape} are zero. */
+    static int[] zeros(int shape) {
+        return switch (shape) {
+            case ANCHOR_X -> new int[] {1, 2, 3};
+            case ANCHOR_Y -> new int[] {0, 2, 4};
+            case ANCHOR_Z -> new int[] {0, 1, 5};
+            case ANGULAR -> new int[] {0, 1, 2};
+            default -> new int[0];
+        };
+    }
+
     double[] data;
     int[] body1;
     /** The second body, -1 for none (the static world). */
     int[] body2;
     /** The normal row whose impulse bounds this friction row, -1 for none. */
     int[] findex;
+    /** Each row's zeros ({@link #DENSE}, {@link #ANCHOR_X} ...), set by the assembly that wrote them. */
+    int[] shape;
     int count;
 
     ConstraintRows(int capacity) {
@@ -30,6 +50,7 @@ final class ConstraintRows {
         body1 = body1 == null ? new int[capacity] : Arrays.copyOf(body1, capacity);
         body2 = body2 == null ? new int[capacity] : Arrays.copyOf(body2, capacity);
         findex = findex == null ? new int[capacity] : Arrays.copyOf(findex, capacity);
+        shape = shape == null ? new int[capacity] : Arrays.copyOf(shape, capacity);
     }
 
     int capacity() {
@@ -42,7 +63,7 @@ final class ConstraintRows {
 
     /**
      * A new row between {@code b1} and {@code b2} (-1: none): J zero, rhs 0, the given cfm,
-     * unbounded, no friction index. Returns its offset into {@link #data}.
+     * unbounded, no friction index, {@link #DENSE}. Returns its offset into {@link #data}.
      */
     int add(int b1, int b2, double cfm) {
         if (count == capacity()) {
@@ -60,6 +81,7 @@ final class ConstraintRows {
         body1[i] = b1;
         body2[i] = b2;
         findex[i] = -1;
+        shape[i] = DENSE;
         return o;
     }
 }

@@ -137,8 +137,10 @@ public final class IslandStep {
      * @param j1 body 1's linear and angular Jacobian (6)
      * @param j2 body 2's (6; zero without a body 2)
      * @param findex the row of its joint whose impulse bounds it (0 the joint's first), -1 for none
+     * @param zeros the indices (of 6) at which the assembly declares J1 and J2 zero, which the
+     *     solver's sweep then leaves out
      */
-    public record AssembledRow(int joint, double[] j1, double[] j2, double rhs, double cfm, double lo, double hi, int findex) {
+    public record AssembledRow(int joint, double[] j1, double[] j2, double rhs, double cfm, double lo, double hi, int findex, int[] zeros) {
     }
 
     /**
@@ -155,7 +157,8 @@ public final class IslandStep {
                 int f = rows.findex[r];
                 out.add(new AssembledRow(islands.joints[n], java.util.Arrays.copyOfRange(d, o + ConstraintRows.J1, o + ConstraintRows.J1 + 6),
                         java.util.Arrays.copyOfRange(d, o + ConstraintRows.J2, o + ConstraintRows.J2 + 6), d[o + ConstraintRows.RHS],
-                        d[o + ConstraintRows.CFM], d[o + ConstraintRows.LO], d[o + ConstraintRows.HI], f < 0 ? -1 : f - jointRowStart[n]));
+                        d[o + ConstraintRows.CFM], d[o + ConstraintRows.LO], d[o + ConstraintRows.HI], f < 0 ? -1 : f - jointRowStart[n],
+                        ConstraintRows.zeros(rows.shape[r])));
             }
         }
         return out;

@@ -1,5 +1,9 @@
 package handsim.sim.island;
 
+import static handsim.sim.island.ConstraintRows.ANCHOR_X;
+import static handsim.sim.island.ConstraintRows.ANCHOR_Y;
+import static handsim.sim.island.ConstraintRows.ANCHOR_Z;
+import static handsim.sim.island.ConstraintRows.ANGULAR;
 import static handsim.sim.island.ConstraintRows.CFM;
 import static handsim.sim.island.ConstraintRows.HI;
 import static handsim.sim.island.ConstraintRows.IMJ1;
@@ -34,6 +38,9 @@ final class ProjectedSor {
     /** The shuffle period in iterations, ODE's. */
     private static final int SHUFFLE_PERIOD = 8;
 
+    /** The shapes of a block of rows, which pick its sweep (see {@link #findBlocks}). */
+    private static final int DENSE_BLOCK = 0, JOINT_BLOCK = 1, ANGULAR_BLOCK = 2;
+
     /** The constraint accelerations M^-1 J^T lambda, 6 per body. */
     final double[] fc;
     /** Each body's free motion -(v/h + M^-1 f), 6 per body. */
@@ -41,12 +48,15 @@ final class ProjectedSor {
     /** The island's rows in their first sweep order (see {@link #pack}), and per row its body offsets and normal row. */
     private double[] data = new double[0];
     private int[] meta = new int[0];
+    /** Each packed row's zeros ({@link ConstraintRows#shape}). */
+    private int[] rowShape = new int[0];
     private double[] lambda = new double[0];
     private int[] order = new int[0];
     /** Each assembled row's index in {@link #data}. */
     private int[] position = new int[0];
-    /** Block b holds packed rows [blockStart[b], blockStart[b + 1]). */
+    /** Block b holds packed rows [blockStart[b], blockStart[b + 1]), of the shape blockShape[b]. */
     private int[] blockStart = new int[1];
+    private int[] blockShape = new int[1];
     private int blockCount;
 
     ProjectedSor(int bodyCount) {
@@ -111,20 +121,44 @@ final class ProjectedSor {
         }
     }
 
-    /** The blocks of the packed order: runs of rows of the same two bodies. */
+    /**
+     * The blocks of the packed order: runs of rows of the same two bodies, each a
+     * {@link #JOINT_BLOCK} (two bodies; a ball's three anchor rows x, y, z, then rows without a
+     * linear part), an {@link #ANGULAR_BLOCK} (two bodies, rows without a linear part) or a
+     * {@link #DENSE_BLOCK}.
+     */
     private void findBlocks(int m) {
         if (blockStart.length < m + 1) {
             blockStart = new int[order.length + 1];
+            blockShape = new int[order.length + 1];
         }
         blockCount = 0;
         int start = 0;
         for (int k = 1; k <= m; k++) {
             if (k == m || meta[3 * k] != meta[3 * start] || meta[3 * k + 1] != meta[3 * start + 1]) {
+                blockShape[blockCount] = shape(start, k);
                 blockStart[blockCount++] = start;
                 start = k;
             }
         }
         blockStart[blockCount] = m;
+    }
+
+    private int shape(int s, int e) {
+        if (meta[3 * s + 1] < 0) {
+            return DENSE_BLOCK;
+        }
+        int k = s;
+        boolean anchors = e - s >= 3 && rowShape[s] == ANCHOR_X && rowShape[s + 1] == ANCHOR_Y && rowShape[s + 2] == ANCHOR_Z;
+        if (anchors) {
+            k += 3;
+        }
+        for (; k < e; k++) {
+            if (rowShape[k] != ANGULAR) {
+                return DENSE_BLOCK;
+            }
+        }
+        return anchors ? JOINT_BLOCK : ANGULAR_BLOCK;
     }
 
     /**
@@ -139,6 +173,7 @@ final class ProjectedSor {
             position = new int[n];
             lambda = new double[n];
             meta = new int[3 * n];
+            rowShape = new int[n];
             data = new double[STRIDE * n];
         }
         int frictionRows = 0;
@@ -158,6 +193,7 @@ final class ProjectedSor {
             System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p0, STRIDE * (next - i));
             for (int r = i, p = p0; r < next; r++, p++) {
                 position[r - start] = p;
+                rowShape[p] = rows.shape[r];
                 meta[3 * p] = 6 * rows.body1[r];
                 meta[3 * p + 1] = rows.body2[r] < 0 ? -1 : 6 * rows.body2[r];
             }
@@ -225,7 +261,9 @@ final class ProjectedSor {
     /**
      * One Gauss-Seidel sweep over the packed rows in their order, block by block (see the class
      * comment): the block's bodies' fc read once, held in locals through the block's rows, and
-     * written once after it.
+     * written once after it. A joint's block leaves out the terms its rows have as zeros (its
+     * shape, {@link #findBlocks}), with the dense sum's rounding: a zero product adds nothing to a
+     * sum, an fma with a zero addend rounds once, and a zero term of M^-1 J^T leaves fc as it is.
      */
     private void sweepBlocks() {
         double[] d = data;
@@ -246,32 +284,72 @@ final class ProjectedSor {
                 c4 = f[b + 4];
                 c5 = f[b + 5];
             }
-            for (int k = s; k < e; k++) {
+            int k = s;
+            int shape = blockShape[bl];
+            if (shape == JOINT_BLOCK) {
+                // the anchor row along x: J's linear part (j0, 0, 0), its angular x term 0
+                int o = STRIDE * k;
+                double sum = a0 * d[o] + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+                sum += c0 * d[o + J2] + Math.fma(c5, d[o + J2 + 5], c4 * d[o + J2 + 4]);
+                double delta = project(lambda, k, d, o, sum);
+                a0 = Math.fma(delta, d[o + IMJ1], a0);
+                a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                c0 = Math.fma(delta, d[o + IMJ2], c0);
+                c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                // along y
+                o += STRIDE;
+                sum = (a1 * d[o + 1] + a3 * d[o + 3]) + a5 * d[o + 5];
+                sum += (c1 * d[o + J2 + 1] + c3 * d[o + J2 + 3]) + c5 * d[o + J2 + 5];
+                delta = project(lambda, k + 1, d, o, sum);
+                a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
+                a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                c1 = Math.fma(delta, d[o + IMJ2 + 1], c1);
+                c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                // along z
+                o += STRIDE;
+                sum = Math.fma(a3, d[o + 3], a2 * d[o + 2]) + a4 * d[o + 4];
+                sum += Math.fma(c3, d[o + J2 + 3], c2 * d[o + J2 + 2]) + c4 * d[o + J2 + 4];
+                delta = project(lambda, k + 2, d, o, sum);
+                a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
+                a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                c2 = Math.fma(delta, d[o + IMJ2 + 2], c2);
+                c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                k += 3;
+            }
+            if (shape != DENSE_BLOCK) {
+                // rows without a linear part
+                for (; k < e; k++) {
+                    int o = STRIDE * k;
+                    double sum = a3 * d[o + 3] + Math.fma(a5, d[o + 5], a4 * d[o + 4]);
+                    sum += c3 * d[o + J2 + 3] + Math.fma(c5, d[o + J2 + 5], c4 * d[o + J2 + 4]);
+                    double delta = project(lambda, k, d, o, sum);
+                    a3 = Math.fma(delta, d[o + IMJ1 + 3], a3);
+                    a4 = Math.fma(delta, d[o + IMJ1 + 4], a4);
+                    a5 = Math.fma(delta, d[o + IMJ1 + 5], a5);
+                    c3 = Math.fma(delta, d[o + IMJ2 + 3], c3);
+                    c4 = Math.fma(delta, d[o + IMJ2 + 4], c4);
+                    c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
+                }
+            }
+            for (; k < e; k++) {
                 int o = STRIDE * k;
                 double sum = dot(d, o, a0, a1, a2, a3, a4, a5);
                 if (b >= 0) {
                     sum += dot(d, o + J2, c0, c1, c2, c3, c4, c5);
                 }
-                double old = lambda[k];
-                double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
-                double lo, hi;
-                int normal = meta[3 * k + 2];
-                if (normal >= 0) {
-                    hi = Math.abs(d[o + HI] * lambda[normal]);
-                    lo = -hi;
-                } else {
-                    lo = d[o + LO];
-                    hi = d[o + HI];
-                }
-                double next = old + delta;
-                if (next < lo) {
-                    delta = lo - old;
-                    next = lo;
-                } else if (next > hi) {
-                    delta = hi - old;
-                    next = hi;
-                }
-                lambda[k] = next;
+                double delta = projectBounded(lambda, k, d, o, sum, meta[3 * k + 2]);
                 a0 = Math.fma(delta, d[o + IMJ1], a0);
                 a1 = Math.fma(delta, d[o + IMJ1 + 1], a1);
                 a2 = Math.fma(delta, d[o + IMJ1 + 2], a2);
@@ -331,26 +409,7 @@ final class ProjectedSor {
                 c5 = f[b + 5];
                 s += dot(d, o + J2, c0, c1, c2, c3, c4, c5);
             }
-            double old = lambda[i];
-            double delta = (d[o + RHS] - old * d[o + CFM]) - s;
-            double lo, hi;
-            int normal = meta[3 * i + 2];
-            if (normal >= 0) {
-                hi = Math.abs(d[o + HI] * lambda[normal]);
-                lo = -hi;
-            } else {
-                lo = d[o + LO];
-                hi = d[o + HI];
-            }
-            double next = old + delta;
-            if (next < lo) {
-                delta = lo - old;
-                next = lo;
-            } else if (next > hi) {
-                delta = hi - old;
-                next = hi;
-            }
-            lambda[i] = next;
+            double delta = projectBounded(lambda, i, d, o, s, meta[3 * i + 2]);
             f[a] = Math.fma(delta, d[o + IMJ1], a0);
             f[a + 1] = Math.fma(delta, d[o + IMJ1 + 1], a1);
             f[a + 2] = Math.fma(delta, d[o + IMJ1 + 2], a2);
@@ -366,6 +425,38 @@ final class ProjectedSor {
                 f[b + 5] = Math.fma(delta, d[o + IMJ2 + 5], c5);
             }
         }
+    }
+
+    /**
+     * Moves row k's impulse by the change that zeroes its residual (rhs - cfm lambda - J fc, with
+     * J fc = {@code sum}), clamped to the row's bounds [lo, hi]; returns the change made.
+     */
+    private static double project(double[] lambda, int k, double[] d, int o, double sum) {
+        double old = lambda[k];
+        return clamp(lambda, k, old, (d[o + RHS] - old * d[o + CFM]) - sum, d[o + LO], d[o + HI]);
+    }
+
+    /** {@link #project}, a friction row's bounds mu times its normal row's impulse (normal &gt;= 0). */
+    private static double projectBounded(double[] lambda, int k, double[] d, int o, double sum, int normal) {
+        if (normal < 0) {
+            return project(lambda, k, d, o, sum);
+        }
+        double old = lambda[k];
+        double hi = Math.abs(d[o + HI] * lambda[normal]);
+        return clamp(lambda, k, old, (d[o + RHS] - old * d[o + CFM]) - sum, -hi, hi);
+    }
+
+    private static double clamp(double[] lambda, int k, double old, double delta, double lo, double hi) {
+        double next = old + delta;
+        if (next < lo) {
+            delta = lo - old;
+            next = lo;
+        } else if (next > hi) {
+            delta = hi - old;
+            next = hi;
+        }
+        lambda[k] = next;
+        return delta;
     }
 
     /** J x of one body's part of a row (6 numbers of {@code d} from {@code o}), in three pairs. */

@@ -101,7 +101,7 @@ class HandsimStepperTest {
             sim.clearContacts();
         }
         assertEquals(reference.size(), mine.size(), "rows");
-        int contactRows = 0, stopRows = 0;
+        int contactRows = 0, stopRows = 0, sparseRows = 0;
         for (int r = 0; r < mine.size(); r++) {
             AssembledRow a = mine.get(r);
             double[] b = reference.get(r);
@@ -118,12 +118,18 @@ class HandsimStepperTest {
             assertEquals(b[14], a.lo(), 0.0, where + " lo");
             assertEquals(b[15], a.hi(), 0.0, where + " hi");
             assertEquals((int) b[16], a.findex(), where + " findex");
+            // the zeros the assembly declares, which the sweep leaves out, are zeros
+            for (int z : a.zeros()) {
+                assertTrue(a.j1()[z] == 0 && a.j2()[z] == 0 && b[z] == 0 && b[8 + z] == 0, where + " declares J[" + z + "] zero");
+            }
+            sparseRows += a.zeros().length > 0 ? 1 : 0;
             contactRows += a.joint() < 0 ? 1 : 0;
             stopRows += b[14] == 0 ^ b[15] == 0 && a.joint() >= 0 ? 1 : 0;
         }
         // the state must exercise contacts, friction and stops
         assertTrue(contactRows >= minContactRows, "contact rows " + contactRows);
         assertTrue(stopRows >= minStopRows, "stop rows " + stopRows);
+        assertTrue(sparseRows >= mine.size() / 2, sparseRows + " of " + mine.size() + " rows declare zeros: the joints' rows at least");
     }
 
     /**
