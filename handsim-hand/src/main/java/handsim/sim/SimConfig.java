@@ -40,6 +40,11 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
             return label;
         }
 
+        /** Every stepper's name, in the order of the enum. */
+        public static String[] labels() {
+            return java.util.Arrays.stream(values()).map(Stepper::label).toArray(String[]::new);
+        }
+
         /** The stepper named {@code label}. */
         public static Stepper of(String label) {
             return named("stepper", label);
@@ -52,7 +57,7 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
                     return s;
                 }
             }
-            throw new IllegalArgumentException(where + " must be handsim or ode4j, got \"" + label + "\"");
+            throw new IllegalArgumentException(where + " must be " + String.join(" or ", labels()) + ", got \"" + label + "\"");
         }
     }
 
@@ -110,7 +115,7 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
                 damping.number("angularPerSecond", 0, 100),
                 solver.integer("iterations", 1, 1000),
                 solver.number("sor", 0.1, 2.0),
-                Stepper.of(solver.choice("stepper", "handsim", "ode4j")),
+                Stepper.of(solver.choice("stepper", Stepper.labels())),
                 Divergence.parse(j.get("divergence")));
         for (Json node : new Json[] {contact, damping, solver, j}) {
             node.requireNoUnknownFields();

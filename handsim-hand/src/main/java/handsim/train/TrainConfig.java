@@ -3,6 +3,7 @@ package handsim.train;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import handsim.config.Json;
 import handsim.learn.LearnerConfig;
+import handsim.sim.SimConfig;
 import handsim.task.StateVector;
 import handsim.taskdef.TaskDefinitions;
 import java.nio.file.Path;
@@ -55,7 +56,7 @@ public record TrainConfig(Run run, LearnerConfig learner) {
             Run r = new Run(j.string("name"), j.string("task"), j.string("object"), j.integer("workers", 1, 256),
                     j.integer("firstCatchAttempts", 1, 100), j.number("divergedReward", -1e6, 0),
                     j.positive("progressSeconds"), StateVector.Encoding.read(j), SpinShaping.read(j),
-                    j.bool("endAtFailedThrow", false), taskSet(j), j.has("stepper") ? j.choice("stepper", "handsim", "ode4j") : null);
+                    j.bool("endAtFailedThrow", false), taskSet(j), j.has("stepper") ? j.choice("stepper", SimConfig.Stepper.labels()) : null);
             if (!r.name.matches("[A-Za-z0-9._-]+")) {
                 throw j.fieldError("name", "letters, digits, '.', '_' and '-' only (it names a folder), got \"" + r.name + "\"");
             }

@@ -66,6 +66,11 @@ final class ConstraintRows {
      * unbounded, no friction index, {@link #DENSE}. Returns its offset into {@link #data}.
      */
     int add(int b1, int b2, double cfm) {
+        return add(b1, b2, cfm, DENSE);
+    }
+
+    /** {@link #add(int, int, double)}, of a shape whose zeros the caller's J keeps. */
+    int add(int b1, int b2, double cfm, int shape) {
         if (count == capacity()) {
             allocate(2 * capacity());
         }
@@ -81,7 +86,7 @@ final class ConstraintRows {
         body1[i] = b1;
         body2[i] = b2;
         findex[i] = -1;
-        shape[i] = DENSE;
+        this.shape[i] = shape;
         return o;
     }
 }

@@ -427,13 +427,9 @@ final class ProjectedSor {
         }
     }
 
-    /**
-     * Moves row k's impulse by the change that zeroes its residual (rhs - cfm lambda - J fc, with
-     * J fc = {@code sum}), clamped to the row's bounds [lo, hi]; returns the change made.
-     */
+    /** {@link #project(double[], int, double[], int, double, double, double)} within the row's own bounds [LO, HI]. */
     private static double project(double[] lambda, int k, double[] d, int o, double sum) {
-        double old = lambda[k];
-        return clamp(lambda, k, old, (d[o + RHS] - old * d[o + CFM]) - sum, d[o + LO], d[o + HI]);
+        return project(lambda, k, d, o, sum, d[o + LO], d[o + HI]);
     }
 
     /** {@link #project}, a friction row's bounds mu times its normal row's impulse (normal &gt;= 0). */
@@ -441,12 +437,17 @@ final class ProjectedSor {
         if (normal < 0) {
             return project(lambda, k, d, o, sum);
         }
-        double old = lambda[k];
         double hi = Math.abs(d[o + HI] * lambda[normal]);
-        return clamp(lambda, k, old, (d[o + RHS] - old * d[o + CFM]) - sum, -hi, hi);
+        return project(lambda, k, d, o, sum, -hi, hi);
     }
 
-    private static double clamp(double[] lambda, int k, double old, double delta, double lo, double hi) {
+    /**
+     * Moves row k's impulse by the change that zeroes its residual (rhs - cfm lambda - J fc, with
+     * J fc = {@code sum}), clamped to [lo, hi]; returns the change made.
+     */
+    private static double project(double[] lambda, int k, double[] d, int o, double sum, double lo, double hi) {
+        double old = lambda[k];
+        double delta = (d[o + RHS] - old * d[o + CFM]) - sum;
         double next = old + delta;
         if (next < lo) {
             delta = lo - old;

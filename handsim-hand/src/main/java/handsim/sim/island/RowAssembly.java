@@ -63,8 +63,7 @@ final class RowAssembly {
         double k = fps * erp;
         double[] d = rows.data;
         for (int r = 0; r < 3; r++) {
-            int o = rows.add(b1, b2, cfm);
-            rows.shape[rows.count - 1] = ConstraintRows.ANCHOR_X + r;
+            int o = rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_X + r);
             d = rows.data;
             d[o + J1 + r] = 1;
             d[o + J2 + r] = -1;
@@ -97,8 +96,7 @@ final class RowAssembly {
         cross(s, 0, s, 9, s, 12);
         double k = fps * erp;
         for (int r = 0; r < 2; r++) {
-            int o = rows.add(b1, b2, cfm);
-            rows.shape[rows.count - 1] = ConstraintRows.ANGULAR;
+            int o = rows.add(b1, b2, cfm, ConstraintRows.ANGULAR);
             double[] d = rows.data;
             int v = 3 + 3 * r;
             for (int i = 0; i < 3; i++) {
@@ -123,8 +121,7 @@ final class RowAssembly {
         }
         cross(s, 0, s, 6, s, 9);
         double l = 1 / Math.sqrt(s[9] * s[9] + s[10] * s[10] + s[11] * s[11]);
-        int o = rows.add(b1, b2, cfm);
-        rows.shape[rows.count - 1] = ConstraintRows.ANGULAR;
+        int o = rows.add(b1, b2, cfm, ConstraintRows.ANGULAR);
         double[] d = rows.data;
         for (int i = 0; i < 3; i++) {
             double p = s[9 + i] * l;
@@ -183,8 +180,7 @@ final class RowAssembly {
         } else {
             return;
         }
-        int o = rows.add(b1, b2, cfm);
-        rows.shape[rows.count - 1] = ConstraintRows.ANGULAR;
+        int o = rows.add(b1, b2, cfm, ConstraintRows.ANGULAR);
         double[] d = rows.data;
         for (int i = 0; i < 3; i++) {
             d[o + J1 + 3 + i] = axis[ai + i];
