@@ -3,11 +3,14 @@ package handsim.app;
 import handsim.config.Home;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 
 /**
- * Where a result came from: the git commit of the working tree (and whether it had changes),
- * the command line, and every config, model and policy file read with its SHA-256.
+ * Where a result came from: the git commit of the code that ran (and whether its tree had
+ * changes), the command line, and every config, model and policy file read with its SHA-256.
+ * The code is the launcher's project ({@code -Dhandsim.code}), which is not the home when
+ * {@code HANDSIM_HOME} puts the configs and runs elsewhere.
  */
 final class Provenance {
 
@@ -32,21 +35,32 @@ final class Provenance {
         return o;
     }
 
-    /** {@code <commit>} or {@code <commit>+changes}; {@code unknown} without git or outside a repository. */
+    /** The commit of the code that runs ({@link #gitCommit(Path)} of {@link #codeRoot}). */
     static String gitCommit() {
-        String head = git("rev-parse", "HEAD");
+        return gitCommit(codeRoot());
+    }
+
+    /** The project whose code runs: the launcher's ({@code -Dhandsim.code}), else the home. */
+    static Path codeRoot() {
+        String code = System.getProperty("handsim.code");
+        return code != null ? Path.of(code) : Home.root();
+    }
+
+    /** {@code <commit>} or {@code <commit>+changes} of the tree at {@code dir}; {@code unknown} without git or outside a repository. */
+    static String gitCommit(Path dir) {
+        String head = git(dir, "rev-parse", "HEAD");
         if (head == null) {
             return "unknown";
         }
-        String status = git("status", "--porcelain", "--untracked-files=no");
+        String status = git(dir, "status", "--porcelain", "--untracked-files=no");
         return status == null || status.isEmpty() ? head : head + "+changes";
     }
 
-    private static String git(String... args) {
+    private static String git(Path dir, String... args) {
         String[] cmd = new String[args.length + 3];
         cmd[0] = "git";
         cmd[1] = "-C";
-        cmd[2] = Home.root().toString();
+        cmd[2] = dir.toString();
         System.arraycopy(args, 0, cmd, 3, args.length);
         try {
             Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
