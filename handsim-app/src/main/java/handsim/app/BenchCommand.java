@@ -11,7 +11,6 @@ import handsim.rollout.Rollouts;
 import handsim.sim.ObjectSpec;
 import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
-import handsim.sim.StepAccounting;
 import handsim.task.CatchThrowEpisode;
 import handsim.task.HeightGoals;
 import handsim.task.HeightTask;
@@ -19,9 +18,7 @@ import handsim.task.HeldBallScenario;
 import handsim.task.ServoLoop;
 import handsim.taskdef.HeightDefinition;
 import java.io.BufferedReader;
-import java.io.IOException;
 import java.io.InputStreamReader;
-import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -32,7 +29,6 @@ import java.util.Map;
 import java.util.concurrent.BrokenBarrierException;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CyclicBarrier;
-import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -108,11 +104,6 @@ final class BenchCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
 
-    /** What one worker measured. */
-    private record Run(long steps, double wallS, double cpuS, double stolenS, long bytes, StepAccounting engine, int episodes,
-            int loopsCaught, int firstCatches, boolean held, double ballToPalm) {
-    }
-
     @Override
     public Integer call() throws Exception {
         if (!scenario.equals("loop") && !scenario.equals("held-ball")) {
@@ -175,12 +166,12 @@ final class BenchCommand implements Callable<Integer> {
         // the sampler runs through both passes, so that its small cost is the same in each; it
         // counts the one-worker pass only
         try (StackSampler sampler = new StackSampler(SAMPLE_PERIOD_MS)) {
-            single = summarize(pass(model, config, thrown, 1, sampler), config);
+            single = BenchRun.summarize(pass(model, config, thrown, 1, sampler), config);
             sampler.closeWindow();
-            print("1 worker", single);
+            BenchRun.print("1 worker", single);
             total = single;
             if (workers > 1) {
-                total = summarize(pass(model, config, thrown, workers, null), config);
+                total = BenchRun.summarize(pass(model, config, thrown, workers, null), config);
             }
             sampler.stop();
             shares = sampler.shares();
@@ -191,7 +182,7 @@ final class BenchCommand implements Callable<Integer> {
         // share, pure Java inside the controller, is read from them
         System.out.printf("  of which DLS IK: %.1f %% (%d JFR execution samples)%n", 100 * shares.get("ik"), samples);
         if (workers > 1) {
-            print(workers + " workers", total);
+            BenchRun.print(workers + " workers", total);
         }
         double speedup = total.get("steps_per_s").asDouble() / single.get("steps_per_s").asDouble();
         if (workers > 1) {
@@ -218,7 +209,7 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** Runs {@code n} workers at once, each on its own engine, measuring after a common start. */
-    private List<Run> pass(HandModel model, SimConfig config, ObjectSpec thrown, int n, StackSampler sampler) {
+    private List<BenchRun> pass(HandModel model, SimConfig config, ObjectSpec thrown, int n, StackSampler sampler) {
         CyclicBarrier measuredStart = new CyclicBarrier(n, () -> {
             if (sampler != null) {
                 sampler.start();
@@ -236,11 +227,11 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     /** Catch-throw episodes one after another (a drop starts the next seed) for warm-up + measured time. */
-    private Run loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
+    private BenchRun loops(Simulator sim, ObjectSpec thrown, long firstSeed, CyclicBarrier start) {
         Loops loops = new Loops(sim, firstSeed);
         loops.runTo(Math.round(warmup / sim.config().timeStep()));
         await(start);
-        Meter meter = new Meter(sim, loops.done);
+        BenchMeter meter = new BenchMeter(sim, loops.done);
         loops.resetCounts();
         loops.runTo(meter.steps0 + Math.round(seconds / sim.config().timeStep()));
         return meter.finish(loops.done, loops.episodes, loops.caught, loops.firstCatches, false, Double.NaN);
@@ -314,7 +305,7 @@ final class BenchCommand implements Callable<Integer> {
             for (SliceServer server : servers) {
                 server.awaitReady();
             }
-            List<List<Run>> slices = List.of(new ArrayList<>(), new ArrayList<>());
+            List<List<BenchRun>> slices = List.of(new ArrayList<>(), new ArrayList<>());
             double[] roundRatios = new double[rounds];
             for (int r = 0; r < rounds; r++) {
                 long n = Math.min(sliceSteps, measuredSteps - r * sliceSteps);
@@ -322,7 +313,7 @@ final class BenchCommand implements Callable<Integer> {
                     int k = (r + turn) % 2;
                     slices.get(k).add(servers[k].slice(n));
                 }
-                roundRatios[r] = rate(slices.get(0).get(r)) / rate(slices.get(1).get(r));
+                roundRatios[r] = slices.get(0).get(r).stepsPerSecond() / slices.get(1).get(r).stepsPerSecond();
             }
             ObjectNode out = JsonNodeFactory.instance.objectNode();
             out.put("scenario", "loop");
@@ -335,10 +326,10 @@ final class BenchCommand implements Callable<Integer> {
             ObjectNode[] summaries = new ObjectNode[2];
             for (int k = 0; k < 2; k++) {
                 int[] counts = servers[k].end();
-                Run run = sequence(slices.get(k), counts);
-                summaries[k] = summarize(List.of(run), config);
+                BenchRun run = BenchRun.sequence(slices.get(k), counts);
+                summaries[k] = BenchRun.summarize(List.of(run), config);
                 out.set(steppers[k].label(), summaries[k]);
-                print(steppers[k].label(), summaries[k]);
+                BenchRun.print(steppers[k].label(), summaries[k]);
             }
             double ratio = summaries[0].get("steps_per_s").asDouble() / summaries[1].get("steps_per_s").asDouble();
             double cpuRatio = summaries[0].get("steps_per_cpu_s").asDouble() / summaries[1].get("steps_per_cpu_s").asDouble();
@@ -405,7 +396,7 @@ final class BenchCommand implements Callable<Integer> {
             for (String line; (line = in.readLine()) != null; ) {
                 if (line.startsWith(SliceServer.RUN)) {
                     target += Long.parseLong(line.substring(SliceServer.RUN.length()));
-                    Meter meter = new Meter(sim, loops.done);
+                    BenchMeter meter = new BenchMeter(sim, loops.done);
                     loops.runTo(target);
                     System.out.println(SliceServer.format(meter.finish(loops.done, 0, 0, 0, false, Double.NaN)));
                 } else if (line.equals(SliceServer.END)) {
@@ -417,73 +408,6 @@ final class BenchCommand implements Callable<Integer> {
         }
     }
 
-    /** A {@code --compare} child process, spoken to line by line (see {@link #serveSlices}). */
-    private static final class SliceServer implements AutoCloseable {
-        static final String READY = "ready", RUN = "run ", SLICE = "slice ", END = "end";
-        private final Process process;
-        private final BufferedReader from;
-        private final PrintStream to;
-
-        SliceServer(List<String> command) throws IOException {
-            process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
-            from = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
-            to = new PrintStream(process.getOutputStream(), true, StandardCharsets.UTF_8);
-        }
-
-        void awaitReady() throws IOException {
-            answer(READY);
-        }
-
-        Run slice(long steps) throws IOException {
-            to.println(RUN + steps);
-            String[] f = answer(SLICE).substring(SLICE.length()).split(" ");
-            StepAccounting engine = new StepAccounting();
-            engine.add(Long.parseLong(f[5]), Long.parseLong(f[6]), Long.parseLong(f[7]), Long.parseLong(f[8]), Long.parseLong(f[9]));
-            return new Run(Long.parseLong(f[0]), Double.parseDouble(f[1]), Double.parseDouble(f[2]), Double.parseDouble(f[3]),
-                    Long.parseLong(f[4]), engine, 0, 0, 0, false, Double.NaN);
-        }
-
-        /** Episodes, catches and first catches since the warm-up. */
-        int[] end() throws IOException {
-            to.println(END);
-            String[] f = answer(END).split(" ");
-            return new int[] {Integer.parseInt(f[1]), Integer.parseInt(f[2]), Integer.parseInt(f[3])};
-        }
-
-        static String format(Run r) {
-            StepAccounting e = r.engine();
-            return SLICE + r.steps() + " " + r.wallS() + " " + r.cpuS() + " " + r.stolenS() + " " + r.bytes() + " " + e.stepNanos() + " "
-                    + e.collisionNanos() + " " + e.solverNanos() + " " + e.engineBytes() + " " + e.solverBytes();
-        }
-
-        /** The child's next line starting with {@code prefix}, other lines skipped. */
-        private String answer(String prefix) throws IOException {
-            for (String line; (line = from.readLine()) != null; ) {
-                if (line.startsWith(prefix)) {
-                    return line;
-                }
-            }
-            throw new IllegalStateException("the bench's child process ended without answering (" + prefix.strip() + "): see its output above");
-        }
-
-        @Override
-        public void close() {
-            to.close();
-            try {
-                if (!process.waitFor(30, TimeUnit.SECONDS)) {
-                    process.destroyForcibly();
-                }
-            } catch (InterruptedException e) {
-                process.destroyForcibly();
-                Thread.currentThread().interrupt();
-            }
-        }
-    }
-
-    private static double rate(Run r) {
-        return r.steps() / r.wallS();
-    }
-
     /** The q-quantile of sorted values, linear between neighbours. */
     private static double quantile(double[] sorted, double q) {
         double x = q * (sorted.length - 1);
@@ -492,25 +416,8 @@ final class BenchCommand implements Callable<Integer> {
         return sorted[i] + (x - i) * (sorted[j] - sorted[i]);
     }
 
-    /** Slices of one world run one after another, as one run, with its episodes, catches and first catches. */
-    private static Run sequence(List<Run> slices, int[] counts) {
-        long steps = 0, bytes = 0;
-        double wall = 0, cpu = 0, stolen = 0;
-        StepAccounting engine = new StepAccounting();
-        for (Run r : slices) {
-            steps += r.steps();
-            wall += r.wallS();
-            cpu += r.cpuS();
-            stolen += r.stolenS();
-            bytes += r.bytes();
-            StepAccounting e = r.engine();
-            engine.add(e.stepNanos(), e.collisionNanos(), e.solverNanos(), e.engineBytes(), e.solverBytes());
-        }
-        return new Run(steps, wall, cpu, stolen, bytes, engine, counts[0], counts[1], counts[2], false, Double.NaN);
-    }
-
     /** The arm holds the ball thrown into its palm: the foundation's benchmark. */
-    private Run heldBall(Simulator sim, HandModel model, ObjectSpec ball, CyclicBarrier start) {
+    private BenchRun heldBall(Simulator sim, HandModel model, ObjectSpec ball, CyclicBarrier start) {
         HeldBallScenario scenario = new HeldBallScenario(new ServoLoop(sim, Wiring.pd(model)), ball, 0.2, 1);
         long warmSteps = Math.max(Math.round(warmup / sim.config().timeStep()), Math.round(1.0 / sim.config().timeStep()));
         long measuredSteps = Math.round(seconds / sim.config().timeStep());
@@ -518,7 +425,7 @@ final class BenchCommand implements Callable<Integer> {
             scenario.step();
         }
         await(start);
-        Meter meter = new Meter(sim, 0);
+        BenchMeter meter = new BenchMeter(sim, 0);
         for (long i = 0; i < measuredSteps; i++) {
             scenario.step();
         }
@@ -527,42 +434,6 @@ final class BenchCommand implements Callable<Integer> {
         double ballToPalm = palmFrame.origin().distance(sim.objectState().position());
         boolean held = sim.handContacts().any() && ballToPalm < 0.06;
         return meter.finish(measuredSteps, 1, held ? 1 : 0, held ? 1 : 0, held, ballToPalm);
-    }
-
-    /** Wall time, this thread's CPU time and allocation from a start. */
-    private static final class Meter {
-        private static final com.sun.management.ThreadMXBean THREADS =
-                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
-        final Simulator sim;
-        final long steps0;
-        final StepAccounting engine0;
-        final long t0;
-        final long cpu0;
-        final long bytes0;
-        final double stolen0;
-
-        /** Starts measuring, and counting the engine's own allocation apart. */
-        Meter(Simulator sim, long steps0) {
-            this.sim = sim;
-            this.steps0 = steps0;
-            sim.setAccounting(true);
-            engine0 = sim.accounting().copy();
-            // read before the clocks and the allocation count start: /proc/stat's reading allocates
-            stolen0 = HostSteal.seconds();
-            t0 = System.nanoTime();
-            cpu0 = THREADS.getCurrentThreadCpuTime();
-            bytes0 = THREADS.getCurrentThreadAllocatedBytes();
-        }
-
-        Run finish(long steps, int episodes, int caught, int firstCatches, boolean held, double ballToPalm) {
-            double wallS = (System.nanoTime() - t0) / 1e9;
-            double cpuS = (THREADS.getCurrentThreadCpuTime() - cpu0) / 1e9;
-            long bytes = THREADS.getCurrentThreadAllocatedBytes() - bytes0;
-            Run r = new Run(steps - steps0, wallS, cpuS, HostSteal.seconds() - stolen0, bytes, minus(sim.accounting(), engine0),
-                    episodes, caught, firstCatches, held, ballToPalm);
-            sim.setAccounting(false);
-            return r;
-        }
     }
 
     private static void await(CyclicBarrier barrier) {
@@ -576,81 +447,6 @@ final class BenchCommand implements Callable<Integer> {
         }
     }
 
-    /**
-     * Totals of one pass: steps/s is the sum of the workers' steps over the longest worker's
-     * wall time (all start together), steps per CPU second is less sensitive to other load.
-     */
-    private static ObjectNode summarize(List<Run> runs, SimConfig config) {
-        long steps = 0, bytes = 0, engineBytes = 0, solverBytes = 0, stepNs = 0, collisionNs = 0, solverNs = 0;
-        double wallSum = 0;
-        double wall = 0, cpu = 0, stolen = 0;
-        int episodes = 0, caught = 0, firstCatches = 0;
-        boolean held = true;
-        double ballToPalm = 0;
-        for (Run r : runs) {
-            steps += r.steps();
-            bytes += r.bytes();
-            engineBytes += r.engine().engineBytes();
-            solverBytes += r.engine().solverBytes();
-            stepNs += r.engine().stepNanos();
-            collisionNs += r.engine().collisionNanos();
-            solverNs += r.engine().solverNanos();
-            wallSum += r.wallS();
-            wall = Math.max(wall, r.wallS());
-            // the workers' windows overlap: the longest one's steal is the pass's
-            stolen = r.wallS() == wall ? r.stolenS() : stolen;
-            cpu += r.cpuS();
-            episodes += r.episodes();
-            caught += r.loopsCaught();
-            firstCatches += r.firstCatches();
-            held &= r.held();
-            ballToPalm = Math.max(ballToPalm, r.ballToPalm());
-        }
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        o.put("workers", runs.size());
-        o.put("steps", steps);
-        o.put("wall_s", wall);
-        o.put("steps_per_s", steps / wall);
-        o.put("realtime_factor", steps / wall * config.timeStep());
-        o.put("steps_per_cpu_s", steps / cpu);
-        if (Double.isFinite(stolen)) {
-            o.put("host_steal_share", HostSteal.share(stolen, wall));
-        }
-        o.put("bytes_per_step", (double) bytes / steps);
-        o.put("engine_bytes_per_step", (double) engineBytes / steps);
-        o.put("solver_bytes_per_step", (double) solverBytes / steps);
-        // where the wall time of the loop goes, timed inside the simulator's step()
-        ObjectNode shares = o.putObject("time_shares");
-        double wallNs = wallSum * 1e9;
-        shares.put("solver", solverNs / wallNs);
-        shares.put("collision", collisionNs / wallNs);
-        shares.put("engine_glue", (stepNs - solverNs - collisionNs) / wallNs);
-        shares.put("controller_pd_episode", Math.max(0, 1 - stepNs / wallNs));
-        o.put("handsim_bytes_per_step", (double) (bytes - engineBytes) / steps);
-        o.put("allocation_mb_per_s", bytes / wall / 1e6);
-        o.put("episodes", episodes);
-        o.put("loops_caught", caught);
-        o.put("first_catches", firstCatches);
-        o.put("ball_held", held);
-        if (Double.isFinite(ballToPalm)) {
-            o.put("ball_to_palm_m", ballToPalm);
-        }
-        return o;
-    }
-
-    private static void print(String label, ObjectNode o) {
-        System.out.printf("  %s: %d steps in %.2f s: %.0f steps/s, %.2fx real time (%.0f steps per CPU second), "
-                + "%.0f bytes/step (engine %.0f, of which the constrained step %.0f; controller and loop %.0f); %d episodes, "
-                + "%d catches%n", label, o.get("steps").asLong(),
-                o.get("wall_s").asDouble(), o.get("steps_per_s").asDouble(), o.get("realtime_factor").asDouble(),
-                o.get("steps_per_cpu_s").asDouble(), o.get("bytes_per_step").asDouble(), o.get("engine_bytes_per_step").asDouble(),
-                o.get("solver_bytes_per_step").asDouble(), o.get("handsim_bytes_per_step").asDouble(), o.get("episodes").asInt(),
-                o.get("loops_caught").asInt());
-        if (o.has("host_steal_share")) {
-            System.out.printf("    the host took %.1f %% of the CPUs' time (steal)%n", 100 * o.get("host_steal_share").asDouble());
-        }
-    }
-
     private static String formatShares(Map<String, Double> shares) {
         StringBuilder b = new StringBuilder();
         shares.forEach((k, v) -> b.append(b.length() > 0 ? ", " : "").append(String.format("%s %.1f %%", k, 100 * v)));
@@ -661,15 +457,6 @@ final class BenchCommand implements Callable<Integer> {
         Map<String, Double> m = new java.util.LinkedHashMap<>();
         shares.fields().forEachRemaining(e -> m.put(e.getKey(), e.getValue().asDouble()));
         return formatShares(m);
-    }
-
-    /** The accounting accumulated since {@code from}. */
-    private static StepAccounting minus(StepAccounting now, StepAccounting from) {
-        StepAccounting d = new StepAccounting();
-        d.add(now.stepNanos() - from.stepNanos(), now.collisionNanos() - from.collisionNanos(),
-                now.solverNanos() - from.solverNanos(), now.engineBytes() - from.engineBytes(),
-                now.solverBytes() - from.solverBytes());
-        return d;
     }
 
     /** The shipped height task's definition. */
