@@ -45,11 +45,6 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
             return java.util.Arrays.stream(values()).map(Stepper::label).toArray(String[]::new);
         }
 
-        /** The stepper named {@code label}. */
-        public static Stepper of(String label) {
-            return named("stepper", label);
-        }
-
         /** The stepper named {@code label}; a bad name is refused naming {@code where} it came from (a field, an option). */
         public static Stepper named(String where, String label) {
             for (Stepper s : values()) {
@@ -115,7 +110,7 @@ public record SimConfig(double timeStep, Vec3 gravity, double groundHeight, doub
                 damping.number("angularPerSecond", 0, 100),
                 solver.integer("iterations", 1, 1000),
                 solver.number("sor", 0.1, 2.0),
-                Stepper.of(solver.choice("stepper", Stepper.labels())),
+                Stepper.named("stepper", solver.choice("stepper", Stepper.labels())),
                 Divergence.parse(j.get("divergence")));
         for (Json node : new Json[] {contact, damping, solver, j}) {
             node.requireNoUnknownFields();
