@@ -86,21 +86,7 @@ final class ProjectedSor {
             return;
         }
         pack(rows, start, m);
-        double rh = 1 / h;
-        double[] d = data;
-        for (int k = 0; k < m; k++) {
-            int o = STRIDE * k;
-            d[o + RHS] *= rh;
-            d[o + CFM] *= rh;
-            lambda[k] = 0;
-            order[k] = k;
-        }
-        for (int k = 0; k < m; k++) {
-            addFreeMotion(d, STRIDE * k, meta[3 * k], meta[3 * k + 1]);
-        }
-        for (int k = 0; k < m; k++) {
-            scale(d, STRIDE * k, meta[3 * k], meta[3 * k + 1], bodies, sor);
-        }
+        prepareRows(rows.data, start, m, bodies, 1 / h, sor);
         findBlocks(m);
         boolean shuffled = false;
         for (int it = 0; it < iterations; it++) {
@@ -162,9 +148,10 @@ final class ProjectedSor {
     }
 
     /**
-     * Copies rows [start, start + m) into {@link #data} in their first sweep order, rows without
-     * a friction index first, each group in assembly order; {@link #meta} holds each row's 6 b1,
-     * 6 b2 (-1 without a body 2) and the packed index of its normal row (-1 for none).
+     * The first sweep order of rows [start, start + m): rows without a friction index first, each
+     * group in assembly order. {@link #position} holds each row's packed index, {@link #meta}
+     * each packed row's 6 b1, 6 b2 (-1 without a body 2) and the packed index of its normal row
+     * (-1 for none).
      */
     private void pack(ConstraintRows rows, int start, int m) {
         if (order.length < m) {
@@ -181,27 +168,12 @@ final class ProjectedSor {
             frictionRows += rows.findex[i] >= 0 ? 1 : 0;
         }
         int head = 0, tail = m - frictionRows;
-        int end = start + m;
-        for (int i = start, next; i < end; i = next) {
-            // a run of rows that stay neighbours (all with or all without a friction index), copied at once
-            boolean friction = rows.findex[i] >= 0;
-            next = i + 1;
-            while (next < end && rows.findex[next] >= 0 == friction) {
-                next++;
-            }
-            int p0 = friction ? tail : head;
-            System.arraycopy(rows.data, STRIDE * i, data, STRIDE * p0, STRIDE * (next - i));
-            for (int r = i, p = p0; r < next; r++, p++) {
-                position[r - start] = p;
-                rowShape[p] = rows.shape[r];
-                meta[3 * p] = 6 * rows.body1[r];
-                meta[3 * p + 1] = rows.body2[r] < 0 ? -1 : 6 * rows.body2[r];
-            }
-            if (friction) {
-                tail += next - i;
-            } else {
-                head += next - i;
-            }
+        for (int i = start; i < start + m; i++) {
+            int p = rows.findex[i] >= 0 ? tail++ : head++;
+            position[i - start] = p;
+            rowShape[p] = rows.shape[i];
+            meta[3 * p] = 6 * rows.body1[i];
+            meta[3 * p + 1] = rows.body2[i] < 0 ? -1 : 6 * rows.body2[i];
         }
         for (int i = start; i < start + m; i++) {
             int f = rows.findex[i];
@@ -209,53 +181,107 @@ final class ProjectedSor {
         }
     }
 
-    /** rhs += J (-(v/h + M^-1 f)) of the row's bodies (at fc offsets a, b). */
-    private void addFreeMotion(double[] d, int o, int a, int b) {
-        double sum = 0;
-        for (int k = 0; k < 6; k++) {
-            sum += d[o + J1 + k] * free[a + k];
-        }
-        if (b >= 0) {
-            for (int k = 0; k < 6; k++) {
-                sum += d[o + J2 + k] * free[b + k];
+    /**
+     * The packed rows from assembled rows [start, start + m) of {@code src}, each of the bodies at
+     * fc offsets a and b (-1: none): rhs and cfm made rates (times 1/h), rhs += J (-(v/h + M^-1 f))
+     * of the two bodies, iMJ = M^-1 J^T, and then the row, its rhs and cfm scaled by
+     * w / (J M^-1 J^T + cfm); every impulse zero and the sweep order the packed order.
+     */
+    private void prepareRows(double[] src, int start, int m, RigidBodies bodies, double rh, double sor) {
+        double[] d = data, free = this.free, ii = bodies.inverseInertiaWorld, inverseMass = bodies.inverseMass;
+        for (int row = 0; row < m; row++) {
+            int p = position[row];
+            int s = STRIDE * (start + row), o = STRIDE * p, a = meta[3 * p], b = meta[3 * p + 1];
+            lambda[p] = 0;
+            order[p] = p;
+            double rhs = src[s + RHS] * rh;
+            double cfm = src[s + CFM] * rh;
+            double j0 = src[s], j1 = src[s + 1], j2 = src[s + 2], j3 = src[s + 3], j4 = src[s + 4], j5 = src[s + 5];
+            double sum = 0;
+            sum += j0 * free[a];
+            sum += j1 * free[a + 1];
+            sum += j2 * free[a + 2];
+            sum += j3 * free[a + 3];
+            sum += j4 * free[a + 4];
+            sum += j5 * free[a + 5];
+            double k0 = 0, k1 = 0, k2 = 0, k3 = 0, k4 = 0, k5 = 0;
+            if (b >= 0) {
+                k0 = src[s + J2];
+                k1 = src[s + J2 + 1];
+                k2 = src[s + J2 + 2];
+                k3 = src[s + J2 + 3];
+                k4 = src[s + J2 + 4];
+                k5 = src[s + J2 + 5];
+                sum += k0 * free[b];
+                sum += k1 * free[b + 1];
+                sum += k2 * free[b + 2];
+                sum += k3 * free[b + 3];
+                sum += k4 * free[b + 4];
+                sum += k5 * free[b + 5];
             }
-        }
-        d[o + RHS] += sum;
-    }
-
-    /** iMJ = M^-1 J^T, then the row, its rhs and cfm scaled by w / (J M^-1 J^T + cfm). */
-    private static void scale(double[] d, int o, int a, int b, RigidBodies bodies, double sor) {
-        inverseMassTimes(d, o + J1, o + IMJ1, a / 6, bodies);
-        double sum = 0;
-        for (int k = 0; k < 6; k++) {
-            sum += d[o + IMJ1 + k] * d[o + J1 + k];
-        }
-        if (b >= 0) {
-            inverseMassTimes(d, o + J2, o + IMJ2, b / 6, bodies);
-            for (int k = 0; k < 6; k++) {
-                sum += d[o + IMJ2 + k] * d[o + J2 + k];
+            rhs += sum;
+            // iMJ of body 1, and J M^-1 J^T summed term by term
+            int n = 9 * (a / 6);
+            double im = inverseMass[a / 6];
+            double m0 = im * j0, m1 = im * j1, m2 = im * j2;
+            double m3 = ii[n] * j3 + ii[n + 1] * j4 + ii[n + 2] * j5;
+            double m4 = ii[n + 3] * j3 + ii[n + 4] * j4 + ii[n + 5] * j5;
+            double m5 = ii[n + 6] * j3 + ii[n + 7] * j4 + ii[n + 8] * j5;
+            d[o + IMJ1] = m0;
+            d[o + IMJ1 + 1] = m1;
+            d[o + IMJ1 + 2] = m2;
+            d[o + IMJ1 + 3] = m3;
+            d[o + IMJ1 + 4] = m4;
+            d[o + IMJ1 + 5] = m5;
+            double jmj = 0;
+            jmj += m0 * j0;
+            jmj += m1 * j1;
+            jmj += m2 * j2;
+            jmj += m3 * j3;
+            jmj += m4 * j4;
+            jmj += m5 * j5;
+            if (b >= 0) {
+                n = 9 * (b / 6);
+                im = inverseMass[b / 6];
+                m0 = im * k0;
+                m1 = im * k1;
+                m2 = im * k2;
+                m3 = ii[n] * k3 + ii[n + 1] * k4 + ii[n + 2] * k5;
+                m4 = ii[n + 3] * k3 + ii[n + 4] * k4 + ii[n + 5] * k5;
+                m5 = ii[n + 6] * k3 + ii[n + 7] * k4 + ii[n + 8] * k5;
+                jmj += m0 * k0;
+                jmj += m1 * k1;
+                jmj += m2 * k2;
+                jmj += m3 * k3;
+                jmj += m4 * k4;
+                jmj += m5 * k5;
+            } else {
+                m0 = m1 = m2 = m3 = m4 = m5 = 0;
             }
+            d[o + IMJ2] = m0;
+            d[o + IMJ2 + 1] = m1;
+            d[o + IMJ2 + 2] = m2;
+            d[o + IMJ2 + 3] = m3;
+            d[o + IMJ2 + 4] = m4;
+            d[o + IMJ2 + 5] = m5;
+            double ad = sor / (jmj + cfm);
+            d[o + CFM] = cfm * ad;
+            d[o + RHS] = rhs * ad;
+            d[o + LO] = src[s + LO];
+            d[o + HI] = src[s + HI];
+            d[o] = j0 * ad;
+            d[o + 1] = j1 * ad;
+            d[o + 2] = j2 * ad;
+            d[o + 3] = j3 * ad;
+            d[o + 4] = j4 * ad;
+            d[o + 5] = j5 * ad;
+            d[o + J2] = k0 * ad;
+            d[o + J2 + 1] = k1 * ad;
+            d[o + J2 + 2] = k2 * ad;
+            d[o + J2 + 3] = k3 * ad;
+            d[o + J2 + 4] = k4 * ad;
+            d[o + J2 + 5] = k5 * ad;
         }
-        double cfm = d[o + CFM];
-        double ad = sor / (sum + cfm);
-        d[o + CFM] = cfm * ad;
-        d[o + RHS] *= ad;
-        for (int k = 0; k < 6; k++) {
-            d[o + J1 + k] *= ad;
-        }
-        if (b >= 0) {
-            for (int k = 0; k < 6; k++) {
-                d[o + J2 + k] *= ad;
-            }
-        }
-    }
-
-    private static void inverseMassTimes(double[] d, int j, int out, int b, RigidBodies bodies) {
-        double im = bodies.inverseMass[b];
-        for (int k = 0; k < 3; k++) {
-            d[out + k] = im * d[j + k];
-        }
-        Matrix3.multiply(bodies.inverseInertiaWorld, 9 * b, d, j + 3, d, out + 3);
     }
 
     /**
