@@ -14,24 +14,25 @@ final class Matrix3 {
         out[oi + 2] = m[mi + 6] * x + m[mi + 7] * y + m[mi + 8] * z;
     }
 
-    /** out = a b (out must not overlap a or b). */
-    static void multiply3(double[] a, int ai, double[] b, int bi, double[] out, int oi) {
-        for (int r = 0; r < 3; r++) {
-            for (int c = 0; c < 3; c++) {
-                out[oi + 3 * r + c] = a[ai + 3 * r] * b[bi + c] + a[ai + 3 * r + 1] * b[bi + 3 + c] + a[ai + 3 * r + 2] * b[bi + 6 + c];
-            }
-        }
-    }
-
-    /** out = r t r^T, the tensor t of a body frame in the world frame; {@code scratch} holds 9. */
-    static void rotateTensor(double[] r, int ri, double[] t, int ti, double[] out, int oi, double[] scratch) {
-        // scratch = t r^T
-        for (int i = 0; i < 3; i++) {
-            for (int j = 0; j < 3; j++) {
-                scratch[3 * i + j] = t[ti + 3 * i] * r[ri + 3 * j] + t[ti + 3 * i + 1] * r[ri + 3 * j + 1] + t[ti + 3 * i + 2] * r[ri + 3 * j + 2];
-            }
-        }
-        multiply3(r, ri, scratch, 0, out, oi);
+    /** out = r t r^T, the tensor t of a body frame in the world frame, r given by its rows (r0 r1 r2; r3 r4 r5; r6 r7 r8). */
+    static void rotateTensor(double r0, double r1, double r2, double r3, double r4, double r5, double r6, double r7, double r8,
+            double[] t, int ti, double[] out, int oi) {
+        // s = t r^T
+        double t0 = t[ti], t1 = t[ti + 1], t2 = t[ti + 2], t3 = t[ti + 3], t4 = t[ti + 4], t5 = t[ti + 5], t6 = t[ti + 6], t7 = t[ti + 7],
+                t8 = t[ti + 8];
+        double s0 = t0 * r0 + t1 * r1 + t2 * r2, s1 = t0 * r3 + t1 * r4 + t2 * r5, s2 = t0 * r6 + t1 * r7 + t2 * r8;
+        double s3 = t3 * r0 + t4 * r1 + t5 * r2, s4 = t3 * r3 + t4 * r4 + t5 * r5, s5 = t3 * r6 + t4 * r7 + t5 * r8;
+        double s6 = t6 * r0 + t7 * r1 + t8 * r2, s7 = t6 * r3 + t7 * r4 + t8 * r5, s8 = t6 * r6 + t7 * r7 + t8 * r8;
+        // out = r s
+        out[oi] = r0 * s0 + r1 * s3 + r2 * s6;
+        out[oi + 1] = r0 * s1 + r1 * s4 + r2 * s7;
+        out[oi + 2] = r0 * s2 + r1 * s5 + r2 * s8;
+        out[oi + 3] = r3 * s0 + r4 * s3 + r5 * s6;
+        out[oi + 4] = r3 * s1 + r4 * s4 + r5 * s7;
+        out[oi + 5] = r3 * s2 + r4 * s5 + r5 * s8;
+        out[oi + 6] = r6 * s0 + r7 * s3 + r8 * s6;
+        out[oi + 7] = r6 * s1 + r7 * s4 + r8 * s7;
+        out[oi + 8] = r6 * s2 + r7 * s5 + r8 * s8;
     }
 
     /** out = m^-1 by the adjugate; returns the determinant, and leaves out untouched when it is 0. */

@@ -39,10 +39,8 @@ public final class RigidBodies {
     final double[] inverseInertiaWorld;
     final boolean[] active;
 
-    private final double[] a = new double[9];
+    /** Scratch: a body's world inertia. */
     private final double[] b = new double[9];
-    private final double[] c = new double[9];
-    private final double[] v = new double[3];
 
     public RigidBodies(int count) {
         this.count = count;
@@ -108,6 +106,7 @@ public final class RigidBodies {
      * which keeps a spinning body's energy from growing as the explicit w x I w would.
      */
     void prepare(double h, double gx, double gy, double gz) {
+        double[] r = rotation;
         for (int i = 0; i < count; i++) {
             if (!dynamic(i)) {
                 continue;
@@ -116,34 +115,39 @@ public final class RigidBodies {
             force[f] += mass[i] * gx;
             force[f + 1] += mass[i] * gy;
             force[f + 2] += mass[i] * gz;
-            Matrix3.rotateTensor(rotation, m, inverseInertia, m, inverseInertiaWorld, m, a);
-            // the implicit gyroscopic torque
-            Matrix3.rotateTensor(rotation, m, inertia, m, b, 0, a);
-            Matrix3.multiply(b, 0, angularVelocity, f, v, 0);
-            double lx = v[0], ly = v[1], lz = v[2];
+            double r0 = r[m], r1 = r[m + 1], r2 = r[m + 2], r3 = r[m + 3], r4 = r[m + 4], r5 = r[m + 5], r6 = r[m + 6], r7 = r[m + 7],
+                    r8 = r[m + 8];
+            Matrix3.rotateTensor(r0, r1, r2, r3, r4, r5, r6, r7, r8, inverseInertia, m, inverseInertiaWorld, m);
+            // the implicit gyroscopic torque, with I = b
+            double[] b = this.b;
+            Matrix3.rotateTensor(r0, r1, r2, r3, r4, r5, r6, r7, r8, inertia, m, b, 0);
+            double b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3], b4 = b[4], b5 = b[5], b6 = b[6], b7 = b[7], b8 = b[8];
+            double wx = angularVelocity[f], wy = angularVelocity[f + 1], wz = angularVelocity[f + 2];
+            double lx = b0 * wx + b1 * wy + b2 * wz;
+            double ly = b3 * wx + b4 * wy + b5 * wz;
+            double lz = b6 * wx + b7 * wy + b8 * wz;
             // c = I - h [L]x
-            System.arraycopy(b, 0, c, 0, 9);
-            c[1] += h * lz;
-            c[2] -= h * ly;
-            c[3] -= h * lz;
-            c[5] += h * lx;
-            c[6] += h * ly;
-            c[7] -= h * lx;
-            if (Matrix3.invert(c, 0, a, 0) == 0) {
+            double c0 = b0, c1 = b1 + h * lz, c2 = b2 - h * ly;
+            double c3 = b3 - h * lz, c4 = b4, c5 = b5 + h * lx;
+            double c6 = b6 + h * ly, c7 = b7 - h * lx, c8 = b8;
+            // its inverse by the adjugate (Matrix3.invert)
+            double det = c0 * (c4 * c8 - c5 * c7) - c1 * (c3 * c8 - c5 * c6) + c2 * (c3 * c7 - c4 * c6);
+            if (det == 0) {
                 continue;
             }
-            // c = I (I - h [L]x)^-1 - 1, applied to L / h
-            Matrix3.multiply3(b, 0, a, 0, c, 0);
-            c[0] -= 1;
-            c[4] -= 1;
-            c[8] -= 1;
-            double k = 1 / h;
-            v[0] = lx * k;
-            v[1] = ly * k;
-            v[2] = lz * k;
-            torque[f] += c[0] * v[0] + c[1] * v[1] + c[2] * v[2];
-            torque[f + 1] += c[3] * v[0] + c[4] * v[1] + c[5] * v[2];
-            torque[f + 2] += c[6] * v[0] + c[7] * v[1] + c[8] * v[2];
+            double k = 1 / det;
+            double a0 = (c4 * c8 - c5 * c7) * k, a1 = (c7 * c2 - c1 * c8) * k, a2 = (c1 * c5 - c4 * c2) * k;
+            double a3 = (c5 * c6 - c3 * c8) * k, a4 = (c0 * c8 - c6 * c2) * k, a5 = (c3 * c2 - c0 * c5) * k;
+            double a6 = (c3 * c7 - c6 * c4) * k, a7 = (c6 * c1 - c0 * c7) * k, a8 = (c0 * c4 - c1 * c3) * k;
+            // I (I - h [L]x)^-1 - 1, applied to L / h
+            double e0 = b0 * a0 + b1 * a3 + b2 * a6 - 1, e1 = b0 * a1 + b1 * a4 + b2 * a7, e2 = b0 * a2 + b1 * a5 + b2 * a8;
+            double e3 = b3 * a0 + b4 * a3 + b5 * a6, e4 = b3 * a1 + b4 * a4 + b5 * a7 - 1, e5 = b3 * a2 + b4 * a5 + b5 * a8;
+            double e6 = b6 * a0 + b7 * a3 + b8 * a6, e7 = b6 * a1 + b7 * a4 + b8 * a7, e8 = b6 * a2 + b7 * a5 + b8 * a8 - 1;
+            double rh = 1 / h;
+            double vx = lx * rh, vy = ly * rh, vz = lz * rh;
+            torque[f] += e0 * vx + e1 * vy + e2 * vz;
+            torque[f + 1] += e3 * vx + e4 * vy + e5 * vz;
+            torque[f + 2] += e6 * vx + e7 * vy + e8 * vz;
         }
     }
 
@@ -181,6 +185,35 @@ public final class RigidBodies {
      * {@code linearScale}, 1 - {@code angularScale}), and the accumulators cleared.
      */
     void integrate(double h, double linearScale, double angularScale) {
+        // two passes over the bodies, each body's arithmetic as one pass would do it: the short
+        // second pass lets the CPU overlap the bodies' square roots and divisions
+        for (int i = 0; i < count; i++) {
+            if (!dynamic(i)) {
+                continue;
+            }
+            int f = 3 * i, q = 4 * i;
+            double hm = h * inverseMass[i];
+            for (int k = 0; k < 3; k++) {
+                velocity[f + k] += force[f + k] * hm;
+                position[f + k] += velocity[f + k] * h;
+            }
+            // the angular velocity change M^-1 (h torque)
+            double[] ii = inverseInertiaWorld;
+            int m = 9 * i;
+            double tx = torque[f] * h, ty = torque[f + 1] * h, tz = torque[f + 2] * h;
+            double wx = angularVelocity[f] + (ii[m] * tx + ii[m + 1] * ty + ii[m + 2] * tz);
+            double wy = angularVelocity[f + 1] + (ii[m + 3] * tx + ii[m + 4] * ty + ii[m + 5] * tz);
+            double wz = angularVelocity[f + 2] + (ii[m + 6] * tx + ii[m + 7] * ty + ii[m + 8] * tz);
+            angularVelocity[f] = wx;
+            angularVelocity[f + 1] = wy;
+            angularVelocity[f + 2] = wz;
+            // the quaternion moved by its derivative, normalised in the second pass
+            double q0 = orientation[q], q1 = orientation[q + 1], q2 = orientation[q + 2], q3 = orientation[q + 3];
+            orientation[q] = q0 + 0.5 * (-wx * q1 - wy * q2 - wz * q3) * h;
+            orientation[q + 1] = q1 + 0.5 * (wx * q0 + wy * q3 - wz * q2) * h;
+            orientation[q + 2] = q2 + 0.5 * (-wx * q3 + wy * q0 + wz * q1) * h;
+            orientation[q + 3] = q3 + 0.5 * (wx * q2 - wy * q1 + wz * q0) * h;
+        }
         for (int i = 0; i < count; i++) {
             if (!dynamic(i)) {
                 if (active[i]) {
@@ -189,26 +222,7 @@ public final class RigidBodies {
                 continue;
             }
             int f = 3 * i, q = 4 * i;
-            double hm = h * inverseMass[i];
-            for (int k = 0; k < 3; k++) {
-                velocity[f + k] += force[f + k] * hm;
-                torque[f + k] *= h;
-            }
-            Matrix3.multiply(inverseInertiaWorld, 9 * i, torque, f, v, 0);
-            for (int k = 0; k < 3; k++) {
-                angularVelocity[f + k] += v[k];
-                position[f + k] += velocity[f + k] * h;
-            }
-            double wx = angularVelocity[f], wy = angularVelocity[f + 1], wz = angularVelocity[f + 2];
             double q0 = orientation[q], q1 = orientation[q + 1], q2 = orientation[q + 2], q3 = orientation[q + 3];
-            double d0 = 0.5 * (-wx * q1 - wy * q2 - wz * q3);
-            double d1 = 0.5 * (wx * q0 + wy * q3 - wz * q2);
-            double d2 = 0.5 * (-wx * q3 + wy * q0 + wz * q1);
-            double d3 = 0.5 * (wx * q2 - wy * q1 + wz * q0);
-            q0 += d0 * h;
-            q1 += d1 * h;
-            q2 += d2 * h;
-            q3 += d3 * h;
             double l = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
             if (l > 0) {
                 l = 1 / Math.sqrt(l);
