@@ -58,55 +58,87 @@ final class RowAssembly {
     /** The three anchor rows: J1 = (1, -[a1]x), J2 = (-1, [a2]x), rhs = fps erp (p2 + a2 - p1 - a1). */
     private void ball(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
         int b1 = a.body1[j], b2 = a.body2[j];
-        Matrix3.multiply(b.rotation, 9 * b1, a.anchor1, 3 * j, s, 0);
-        Matrix3.multiply(b.rotation, 9 * b2, a.anchor2, 3 * j, s, 3);
+        double[] r = b.rotation, p = b.position;
+        int m1 = 9 * b1, m2 = 9 * b2, x = 3 * j, p1 = 3 * b1, p2 = 3 * b2;
+        // the anchors relative to the centres of mass, world frame: a1 = R1 anchor1, a2 = R2 anchor2
+        double u = a.anchor1[x], v = a.anchor1[x + 1], w = a.anchor1[x + 2];
+        double a1x = r[m1] * u + r[m1 + 1] * v + r[m1 + 2] * w;
+        double a1y = r[m1 + 3] * u + r[m1 + 4] * v + r[m1 + 5] * w;
+        double a1z = r[m1 + 6] * u + r[m1 + 7] * v + r[m1 + 8] * w;
+        u = a.anchor2[x];
+        v = a.anchor2[x + 1];
+        w = a.anchor2[x + 2];
+        double a2x = r[m2] * u + r[m2 + 1] * v + r[m2 + 2] * w;
+        double a2y = r[m2 + 3] * u + r[m2 + 4] * v + r[m2 + 5] * w;
+        double a2z = r[m2 + 6] * u + r[m2 + 7] * v + r[m2 + 8] * w;
         double k = fps * erp;
-        double[] d = rows.data;
-        for (int r = 0; r < 3; r++) {
-            int o = rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_X + r);
-            d = rows.data;
-            d[o + J1 + r] = 1;
-            d[o + J2 + r] = -1;
-            d[o + RHS] = k * (s[3 + r] + b.position[3 * b2 + r] - s[r] - b.position[3 * b1 + r]);
-        }
-        int o = rows.count * ConstraintRows.STRIDE - 3 * ConstraintRows.STRIDE;
-        crossRows(d, o, s, 0, -1, J1 + 3);
-        crossRows(d, o, s, 3, 1, J2 + 3);
-    }
-
-    /** Writes sign [v]x into the angular parts (at {@code part}) of the three rows from {@code o}. */
-    private static void crossRows(double[] d, int o, double[] v, int vi, double sign, int part) {
         int st = ConstraintRows.STRIDE;
-        double x = sign * v[vi], y = sign * v[vi + 1], z = sign * v[vi + 2];
-        d[o + part + 1] = -z;
-        d[o + part + 2] = y;
-        d[o + st + part] = z;
-        d[o + st + part + 2] = -x;
-        d[o + 2 * st + part] = -y;
-        d[o + 2 * st + part + 1] = x;
+        int o = rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_X);
+        rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_Y);
+        rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_Z);
+        double[] d = rows.data;
+        d[o + J1] = 1;
+        d[o + J2] = -1;
+        d[o + RHS] = k * (a2x + p[p2] - a1x - p[p1]);
+        d[o + st + J1 + 1] = 1;
+        d[o + st + J2 + 1] = -1;
+        d[o + st + RHS] = k * (a2y + p[p2 + 1] - a1y - p[p1 + 1]);
+        d[o + 2 * st + J1 + 2] = 1;
+        d[o + 2 * st + J2 + 2] = -1;
+        d[o + 2 * st + RHS] = k * (a2z + p[p2 + 2] - a1z - p[p1 + 2]);
+        // J1's angular part -[a1]x, J2's [a2]x, row by row
+        d[o + J1 + 4] = a1z;
+        d[o + J1 + 5] = -a1y;
+        d[o + st + J1 + 3] = -a1z;
+        d[o + st + J1 + 5] = a1x;
+        d[o + 2 * st + J1 + 3] = a1y;
+        d[o + 2 * st + J1 + 4] = -a1x;
+        d[o + J2 + 4] = -a2z;
+        d[o + J2 + 5] = a2y;
+        d[o + st + J2 + 3] = a2z;
+        d[o + st + J2 + 5] = -a2x;
+        d[o + 2 * st + J2 + 3] = -a2y;
+        d[o + 2 * st + J2 + 4] = a2x;
     }
 
     private void hinge(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
         ball(a, j, b, rows, fps);
         int b1 = a.body1[j], b2 = a.body2[j];
-        // ax1 at s[0], p at s[3], q at s[6], ax2 at s[9], ax1 x ax2 at s[12]
-        Matrix3.multiply(b.rotation, 9 * b1, a.axis1, 3 * j, s, 0);
-        Matrix3.planeSpace(s[0], s[1], s[2], s, 3, 6);
-        Matrix3.multiply(b.rotation, 9 * b2, a.axis2, 3 * j, s, 9);
-        cross(s, 0, s, 9, s, 12);
+        double[] r = b.rotation;
+        int m1 = 9 * b1, m2 = 9 * b2, x = 3 * j;
+        // ax1 = R1 axis1 at s[0], its plane space p at s[3], q at s[6]; ax2 = R2 axis2
+        double u = a.axis1[x], v = a.axis1[x + 1], w = a.axis1[x + 2];
+        double ax = r[m1] * u + r[m1 + 1] * v + r[m1 + 2] * w;
+        double ay = r[m1 + 3] * u + r[m1 + 4] * v + r[m1 + 5] * w;
+        double az = r[m1 + 6] * u + r[m1 + 7] * v + r[m1 + 8] * w;
+        s[0] = ax;
+        s[1] = ay;
+        s[2] = az;
+        Matrix3.planeSpace(ax, ay, az, s, 3, 6);
+        u = a.axis2[x];
+        v = a.axis2[x + 1];
+        w = a.axis2[x + 2];
+        double bx = r[m2] * u + r[m2 + 1] * v + r[m2 + 2] * w;
+        double by = r[m2 + 3] * u + r[m2 + 4] * v + r[m2 + 5] * w;
+        double bz = r[m2 + 6] * u + r[m2 + 7] * v + r[m2 + 8] * w;
+        // the misalignment ax1 x ax2
+        double ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
         double k = fps * erp;
-        for (int r = 0; r < 2; r++) {
+        for (int row = 0; row < 2; row++) {
             int o = rows.add(b1, b2, cfm, ConstraintRows.ANGULAR);
             double[] d = rows.data;
-            int v = 3 + 3 * r;
-            for (int i = 0; i < 3; i++) {
-                d[o + J1 + 3 + i] = s[v + i];
-                d[o + J2 + 3 + i] = -s[v + i];
-            }
-            d[o + RHS] = k * (s[12] * s[v] + s[13] * s[v + 1] + s[14] * s[v + 2]);
+            int t = 3 + 3 * row;
+            double tx = s[t], ty = s[t + 1], tz = s[t + 2];
+            d[o + J1 + 3] = tx;
+            d[o + J1 + 4] = ty;
+            d[o + J1 + 5] = tz;
+            d[o + J2 + 3] = -tx;
+            d[o + J2 + 4] = -ty;
+            d[o + J2 + 5] = -tz;
+            d[o + RHS] = k * (ex * tx + ey * ty + ez * tz);
         }
-        JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, 3 * j, q, rotation, 0);
-        rotationStop(a, 3 * j, rows, b1, b2, fps, rotation[0], rotation[1], 1, s, 0);
+        JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, x, rotation, 0);
+        rotationStop(a, x, rows, b1, b2, fps, rotation[0], rotation[1], 1, s, 0);
     }
 
     private void universal(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
