@@ -1,5 +1,6 @@
 package handsim.kin;
 
+import handsim.math.ArcTangent;
 import handsim.math.Quat;
 import handsim.math.Vec3;
 import handsim.model.Body;
@@ -202,22 +203,22 @@ public final class Kinematics {
                 // twist angle about a0: 2 atan2(v . a, w)
                 int a = 3 * first;
                 double s = x * axes[a] + y * axes[a + 1] + z * axes[a + 2];
-                q[first] = wrap(2 * Math.atan2(s, w));
+                q[first] = wrap(2 * ArcTangent.atan2(s, w));
             }
             case UNIVERSAL -> {
                 // R = R(a0, q0) R(a1, q1): in the basis (a0, a1, a0 x a1) this is Rx(q0) Ry(q1)
                 double[] b = bases[j.index()];
-                q[first] = Math.atan2(inBasis(w, x, y, z, b, 2, 1), inBasis(w, x, y, z, b, 1, 1));
-                q[first + 1] = Math.atan2(inBasis(w, x, y, z, b, 0, 2), inBasis(w, x, y, z, b, 0, 0));
+                q[first] = ArcTangent.atan2(inBasis(w, x, y, z, b, 2, 1), inBasis(w, x, y, z, b, 1, 1));
+                q[first + 1] = ArcTangent.atan2(inBasis(w, x, y, z, b, 0, 2), inBasis(w, x, y, z, b, 0, 0));
             }
             case BALL -> {
                 // R = R(a0, q0) R(a1, q1) R(a2, q2): in the basis (a0, a1, s a2) with s making it
                 // right-handed this is Rx(q0) Ry(q1) Rz(s q2)
                 double[] b = bases[j.index()];
                 double sign = ballSign[j.index()];
-                q[first] = Math.atan2(-inBasis(w, x, y, z, b, 1, 2), inBasis(w, x, y, z, b, 2, 2));
+                q[first] = ArcTangent.atan2(-inBasis(w, x, y, z, b, 1, 2), inBasis(w, x, y, z, b, 2, 2));
                 q[first + 1] = Math.asin(Math.max(-1, Math.min(1, inBasis(w, x, y, z, b, 0, 2))));
-                q[first + 2] = sign * Math.atan2(-inBasis(w, x, y, z, b, 0, 1), inBasis(w, x, y, z, b, 0, 0));
+                q[first + 2] = sign * ArcTangent.atan2(-inBasis(w, x, y, z, b, 0, 1), inBasis(w, x, y, z, b, 0, 0));
             }
         }
     }
@@ -394,7 +395,26 @@ public final class Kinematics {
 
     /** Wraps an angle into (-pi, pi]. */
     public static double wrap(double a) {
-        double w = Math.IEEEremainder(a, 2 * Math.PI);
+        double w = remainder(a);
         return w <= -Math.PI ? w + 2 * Math.PI : w;
+    }
+
+    /**
+     * Math.IEEEremainder(a, 2 pi), bit for bit, without its native call where |a| <= 2 pi (a
+     * hinge's 2 atan2): the quotient then rounds to 0 up to |a| = pi (a tie rounds to even) and
+     * to +-1 beyond it, where a -+ 2 pi is exact (Sterbenz), an exact zero taking a's sign as the
+     * IEEE remainder does.
+     */
+    static double remainder(double a) {
+        double p = 2 * Math.PI;
+        double m = Math.abs(a);
+        if (m <= Math.PI) {
+            return a;
+        }
+        if (m <= p) {
+            double r = a > 0 ? a - p : a + p;
+            return r == 0 ? 0 * a : r;
+        }
+        return Math.IEEEremainder(a, p);
     }
 }

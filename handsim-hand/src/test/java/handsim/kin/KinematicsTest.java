@@ -96,4 +96,32 @@ class KinematicsTest {
             assertEquals(0, frames[b.index()].rotation().angleTo(Quat.IDENTITY), 1e-12);
         }
     }
+
+    /**
+     * Kinematics.remainder stands in for Math.IEEEremainder(a, 2 pi) in every joint angle read
+     * back, so it must give its bits: random angles across 5 turns, and the edges of its fast
+     * path (0, pi, 2 pi, each side of them, of both signs) and the values it passes on.
+     */
+    @Test
+    void remainderGivesTheIeeeRemaindersBits() {
+        double p = 2 * Math.PI;
+        java.util.List<Double> cases = new java.util.ArrayList<>();
+        for (double edge : new double[] {0, Math.PI, p, 1.5 * p, 2 * p, Double.MIN_VALUE, 1e-300}) {
+            for (double v : new double[] {edge, Math.nextUp(edge), Math.nextDown(edge)}) {
+                cases.add(v);
+                cases.add(-v);
+            }
+        }
+        SplittableRandom rng = new SplittableRandom(11);
+        for (int i = 0; i < 200_000; i++) {
+            cases.add(rng.nextDouble(-2.5 * p, 2.5 * p));
+        }
+        for (double a : cases) {
+            assertEquals(Double.doubleToRawLongBits(Math.IEEEremainder(a, p)), Double.doubleToRawLongBits(Kinematics.remainder(a)),
+                    () -> "remainder(" + a + ")");
+        }
+        for (double a : new double[] {Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY}) {
+            assertEquals(Double.isNaN(Math.IEEEremainder(a, p)), Double.isNaN(Kinematics.remainder(a)), () -> "remainder(" + a + ")");
+        }
+    }
 }

@@ -1,5 +1,7 @@
 package handsim.sim.island;
 
+import handsim.math.ArcTangent;
+
 /**
  * The joint angles a hinge's and a universal joint's stops are tested with, measured as ODE
  * measures them, so that a stop engages exactly when ode4j's would: from the relative rotation

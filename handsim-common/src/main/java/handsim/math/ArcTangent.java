@@ -1,12 +1,13 @@
-package handsim.sim.island;
+package handsim.math;
 
 /**
  * atan2 bit for bit as {@link StrictMath#atan2} computes it, in Java: fdlibm 5.3's e_atan2.c and
  * s_atan.c (Sun Microsystems, freely distributable), whose results StrictMath is specified to
- * return. On JDK 17 {@link Math#atan2} calls that C code through a native call, which costs a
- * stopped joint of the constrained step more than the arithmetic does.
+ * return. On JDK 17 {@link Math#atan2} calls that C code through a native call, which costs more
+ * than the arithmetic does: the joint angles read back every step and a stopped joint of the
+ * constrained step take it from here.
  */
-final class ArcTangent {
+public final class ArcTangent {
 
     private ArcTangent() {
     }
@@ -78,7 +79,7 @@ final class ArcTangent {
     }
 
     /** The angle of the point (x, y), in [-pi, pi]: {@link StrictMath#atan2}'s bits. */
-    static double atan2(double y, double x) {
+    public static double atan2(double y, double x) {
         int hx = high(x), lx = low(x), ix = hx & 0x7fffffff;
         int hy = high(y), ly = low(y), iy = hy & 0x7fffffff;
         if ((ix | ((lx | -lx) >>> 31)) > 0x7ff00000 || (iy | ((ly | -ly) >>> 31)) > 0x7ff00000) {

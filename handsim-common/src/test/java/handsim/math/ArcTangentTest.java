@@ -1,4 +1,4 @@
-package handsim.sim.island;
+package handsim.math;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
