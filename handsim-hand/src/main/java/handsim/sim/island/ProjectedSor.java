@@ -197,13 +197,6 @@ final class ProjectedSor {
             double rhs = src[s + RHS] * rh;
             double cfm = src[s + CFM] * rh;
             double j0 = src[s], j1 = src[s + 1], j2 = src[s + 2], j3 = src[s + 3], j4 = src[s + 4], j5 = src[s + 5];
-            double sum = 0;
-            sum += j0 * free[a];
-            sum += j1 * free[a + 1];
-            sum += j2 * free[a + 2];
-            sum += j3 * free[a + 3];
-            sum += j4 * free[a + 4];
-            sum += j5 * free[a + 5];
             double k0 = 0, k1 = 0, k2 = 0, k3 = 0, k4 = 0, k5 = 0;
             if (b >= 0) {
                 k0 = src[s + J2];
@@ -212,76 +205,71 @@ final class ProjectedSor {
                 k3 = src[s + J2 + 3];
                 k4 = src[s + J2 + 4];
                 k5 = src[s + J2 + 5];
-                sum += k0 * free[b];
-                sum += k1 * free[b + 1];
-                sum += k2 * free[b + 2];
-                sum += k3 * free[b + 3];
-                sum += k4 * free[b + 4];
-                sum += k5 * free[b + 5];
+            }
+            // J (-(v/h + M^-1 f)), and J M^-1 J^T with iMJ written, each summed term by term
+            double sum = accumulate(0, j0, j1, j2, j3, j4, j5, free, a);
+            double jmj = inverseMassTimes(0, j0, j1, j2, j3, j4, j5, inverseMass[a / 6], ii, 9 * (a / 6), d, o + IMJ1);
+            if (b >= 0) {
+                sum = accumulate(sum, k0, k1, k2, k3, k4, k5, free, b);
+                jmj = inverseMassTimes(jmj, k0, k1, k2, k3, k4, k5, inverseMass[b / 6], ii, 9 * (b / 6), d, o + IMJ2);
+            } else {
+                Arrays.fill(d, o + IMJ2, o + IMJ2 + 6, 0);
             }
             rhs += sum;
-            // iMJ of body 1, and J M^-1 J^T summed term by term
-            int n = 9 * (a / 6);
-            double im = inverseMass[a / 6];
-            double m0 = im * j0, m1 = im * j1, m2 = im * j2;
-            double m3 = ii[n] * j3 + ii[n + 1] * j4 + ii[n + 2] * j5;
-            double m4 = ii[n + 3] * j3 + ii[n + 4] * j4 + ii[n + 5] * j5;
-            double m5 = ii[n + 6] * j3 + ii[n + 7] * j4 + ii[n + 8] * j5;
-            d[o + IMJ1] = m0;
-            d[o + IMJ1 + 1] = m1;
-            d[o + IMJ1 + 2] = m2;
-            d[o + IMJ1 + 3] = m3;
-            d[o + IMJ1 + 4] = m4;
-            d[o + IMJ1 + 5] = m5;
-            double jmj = 0;
-            jmj += m0 * j0;
-            jmj += m1 * j1;
-            jmj += m2 * j2;
-            jmj += m3 * j3;
-            jmj += m4 * j4;
-            jmj += m5 * j5;
-            if (b >= 0) {
-                n = 9 * (b / 6);
-                im = inverseMass[b / 6];
-                m0 = im * k0;
-                m1 = im * k1;
-                m2 = im * k2;
-                m3 = ii[n] * k3 + ii[n + 1] * k4 + ii[n + 2] * k5;
-                m4 = ii[n + 3] * k3 + ii[n + 4] * k4 + ii[n + 5] * k5;
-                m5 = ii[n + 6] * k3 + ii[n + 7] * k4 + ii[n + 8] * k5;
-                jmj += m0 * k0;
-                jmj += m1 * k1;
-                jmj += m2 * k2;
-                jmj += m3 * k3;
-                jmj += m4 * k4;
-                jmj += m5 * k5;
-            } else {
-                m0 = m1 = m2 = m3 = m4 = m5 = 0;
-            }
-            d[o + IMJ2] = m0;
-            d[o + IMJ2 + 1] = m1;
-            d[o + IMJ2 + 2] = m2;
-            d[o + IMJ2 + 3] = m3;
-            d[o + IMJ2 + 4] = m4;
-            d[o + IMJ2 + 5] = m5;
             double ad = sor / (jmj + cfm);
             d[o + CFM] = cfm * ad;
             d[o + RHS] = rhs * ad;
             d[o + LO] = src[s + LO];
             d[o + HI] = src[s + HI];
-            d[o] = j0 * ad;
-            d[o + 1] = j1 * ad;
-            d[o + 2] = j2 * ad;
-            d[o + 3] = j3 * ad;
-            d[o + 4] = j4 * ad;
-            d[o + 5] = j5 * ad;
-            d[o + J2] = k0 * ad;
-            d[o + J2 + 1] = k1 * ad;
-            d[o + J2 + 2] = k2 * ad;
-            d[o + J2 + 3] = k3 * ad;
-            d[o + J2 + 4] = k4 * ad;
-            d[o + J2 + 5] = k5 * ad;
+            scaled(d, o + J1, ad, j0, j1, j2, j3, j4, j5);
+            scaled(d, o + J2, ad, k0, k1, k2, k3, k4, k5);
         }
+    }
+
+    /** sum + x . (j0 ... j5), x from {@code at}, added term by term. */
+    private static double accumulate(double sum, double j0, double j1, double j2, double j3, double j4, double j5, double[] x, int at) {
+        sum += j0 * x[at];
+        sum += j1 * x[at + 1];
+        sum += j2 * x[at + 2];
+        sum += j3 * x[at + 3];
+        sum += j4 * x[at + 4];
+        sum += j5 * x[at + 5];
+        return sum;
+    }
+
+    /**
+     * One body's part of iMJ = M^-1 J^T (inverse mass {@code im}, world inverse inertia at
+     * {@code ii[n]}) into {@code d[out...]}; returns sum + that part of J M^-1 J^T, added term by
+     * term.
+     */
+    private static double inverseMassTimes(double sum, double j0, double j1, double j2, double j3, double j4, double j5, double im,
+            double[] ii, int n, double[] d, int out) {
+        double m0 = im * j0, m1 = im * j1, m2 = im * j2;
+        double m3 = ii[n] * j3 + ii[n + 1] * j4 + ii[n + 2] * j5;
+        double m4 = ii[n + 3] * j3 + ii[n + 4] * j4 + ii[n + 5] * j5;
+        double m5 = ii[n + 6] * j3 + ii[n + 7] * j4 + ii[n + 8] * j5;
+        d[out] = m0;
+        d[out + 1] = m1;
+        d[out + 2] = m2;
+        d[out + 3] = m3;
+        d[out + 4] = m4;
+        d[out + 5] = m5;
+        sum += m0 * j0;
+        sum += m1 * j1;
+        sum += m2 * j2;
+        sum += m3 * j3;
+        sum += m4 * j4;
+        sum += m5 * j5;
+        return sum;
+    }
+
+    private static void scaled(double[] d, int o, double ad, double j0, double j1, double j2, double j3, double j4, double j5) {
+        d[o] = j0 * ad;
+        d[o + 1] = j1 * ad;
+        d[o + 2] = j2 * ad;
+        d[o + 3] = j3 * ad;
+        d[o + 4] = j4 * ad;
+        d[o + 5] = j5 * ad;
     }
 
     /**

@@ -58,19 +58,12 @@ final class RowAssembly {
     /** The three anchor rows: J1 = (1, -[a1]x), J2 = (-1, [a2]x), rhs = fps erp (p2 + a2 - p1 - a1). */
     private void ball(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
         int b1 = a.body1[j], b2 = a.body2[j];
-        double[] r = b.rotation, p = b.position;
-        int m1 = 9 * b1, m2 = 9 * b2, x = 3 * j, p1 = 3 * b1, p2 = 3 * b2;
+        double[] p = b.position;
+        int p1 = 3 * b1, p2 = 3 * b2;
         // the anchors relative to the centres of mass, world frame: a1 = R1 anchor1, a2 = R2 anchor2
-        double u = a.anchor1[x], v = a.anchor1[x + 1], w = a.anchor1[x + 2];
-        double a1x = r[m1] * u + r[m1 + 1] * v + r[m1 + 2] * w;
-        double a1y = r[m1 + 3] * u + r[m1 + 4] * v + r[m1 + 5] * w;
-        double a1z = r[m1 + 6] * u + r[m1 + 7] * v + r[m1 + 8] * w;
-        u = a.anchor2[x];
-        v = a.anchor2[x + 1];
-        w = a.anchor2[x + 2];
-        double a2x = r[m2] * u + r[m2 + 1] * v + r[m2 + 2] * w;
-        double a2y = r[m2 + 3] * u + r[m2 + 4] * v + r[m2 + 5] * w;
-        double a2z = r[m2 + 6] * u + r[m2 + 7] * v + r[m2 + 8] * w;
+        Matrix3.multiply(b.rotation, 9 * b1, a.anchor1, 3 * j, s, 0);
+        Matrix3.multiply(b.rotation, 9 * b2, a.anchor2, 3 * j, s, 3);
+        double a1x = s[0], a1y = s[1], a1z = s[2], a2x = s[3], a2y = s[4], a2z = s[5];
         double k = fps * erp;
         int st = ConstraintRows.STRIDE;
         int o = rows.add(b1, b2, cfm, ConstraintRows.ANCHOR_X);
@@ -104,23 +97,13 @@ final class RowAssembly {
     private void hinge(Articulation a, int j, RigidBodies b, ConstraintRows rows, double fps) {
         ball(a, j, b, rows, fps);
         int b1 = a.body1[j], b2 = a.body2[j];
-        double[] r = b.rotation;
-        int m1 = 9 * b1, m2 = 9 * b2, x = 3 * j;
-        // ax1 = R1 axis1 at s[0], its plane space p at s[3], q at s[6]; ax2 = R2 axis2
-        double u = a.axis1[x], v = a.axis1[x + 1], w = a.axis1[x + 2];
-        double ax = r[m1] * u + r[m1 + 1] * v + r[m1 + 2] * w;
-        double ay = r[m1 + 3] * u + r[m1 + 4] * v + r[m1 + 5] * w;
-        double az = r[m1 + 6] * u + r[m1 + 7] * v + r[m1 + 8] * w;
-        s[0] = ax;
-        s[1] = ay;
-        s[2] = az;
+        int x = 3 * j;
+        // ax1 = R1 axis1 at s[0], its plane space p at s[3], q at s[6]; ax2 = R2 axis2 at s[9]
+        Matrix3.multiply(b.rotation, 9 * b1, a.axis1, x, s, 0);
+        double ax = s[0], ay = s[1], az = s[2];
         Matrix3.planeSpace(ax, ay, az, s, 3, 6);
-        u = a.axis2[x];
-        v = a.axis2[x + 1];
-        w = a.axis2[x + 2];
-        double bx = r[m2] * u + r[m2 + 1] * v + r[m2 + 2] * w;
-        double by = r[m2 + 3] * u + r[m2 + 4] * v + r[m2 + 5] * w;
-        double bz = r[m2 + 6] * u + r[m2 + 7] * v + r[m2 + 8] * w;
+        Matrix3.multiply(b.rotation, 9 * b2, a.axis2, x, s, 9);
+        double bx = s[9], by = s[10], bz = s[11];
         // the misalignment ax1 x ax2
         double ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
         double k = fps * erp;
