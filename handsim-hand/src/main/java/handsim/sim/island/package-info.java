@@ -10,6 +10,6 @@
  * axes, contact geometry): this package knows no engine and no model. {@code handsim.sim.ode}
  * fills it from ode4j's bodies and contact geometry and writes the result back.
  *
- * <p>Imports no handsim package.
+ * <p>Imports {@code handsim.math} only (its arc tangent, {@code ArcTangent}).
  */
 package handsim.sim.island;
