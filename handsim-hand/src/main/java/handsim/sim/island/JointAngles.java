@@ -57,17 +57,10 @@ final class JointAngles {
         return -sinHalf / cosHalf;
     }
 
-    /** A hinge's rotation about its axis (see {@link #aboutAxis}): the child's relative to the parent, conj(q1) q2, about the parent-frame axis. */
-    static void hinge(double[] q1, int i1, double[] q2, int i2, double[] axis, int ai, double[] out, int oi) {
-        // multiply(q1, i1, true, q2, i2, false, ...) and aboutAxis, in locals
-        double a0 = q1[i1], a1 = -q1[i1 + 1], a2 = -q1[i1 + 2], a3 = -q1[i1 + 3];
-        double b0 = q2[i2], b1 = q2[i2 + 1], b2 = q2[i2 + 2], b3 = q2[i2 + 3];
-        double w = a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3;
-        double x = a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2;
-        double y = a0 * b2 + a2 * b0 + a3 * b1 - a1 * b3;
-        double z = a0 * b3 + a3 * b0 + a1 * b2 - a2 * b1;
-        out[oi] = Math.sqrt(x * x + y * y + z * z);
-        out[oi + 1] = x * axis[ai] + y * axis[ai + 1] + z * axis[ai + 2] >= 0 ? w : -w;
+    /** A hinge's rotation about its axis (see {@link #aboutAxis}): the child's relative to the parent about the parent-frame axis. */
+    static void hinge(double[] q1, int i1, double[] q2, int i2, double[] axis, int ai, double[] s, double[] out, int oi) {
+        multiply(q1, i1, true, q2, i2, false, s, 0);
+        aboutAxis(s, 0, axis, ai, out, oi);
     }
 
     /**

@@ -37,9 +37,12 @@ final class Matrix3 {
 
     /** out = m^-1 by the adjugate; returns the determinant, and leaves out untouched when it is 0. */
     static double invert(double[] m, int mi, double[] out, int oi) {
-        double m00 = m[mi], m01 = m[mi + 1], m02 = m[mi + 2];
-        double m10 = m[mi + 3], m11 = m[mi + 4], m12 = m[mi + 5];
-        double m20 = m[mi + 6], m21 = m[mi + 7], m22 = m[mi + 8];
+        return invert(m[mi], m[mi + 1], m[mi + 2], m[mi + 3], m[mi + 4], m[mi + 5], m[mi + 6], m[mi + 7], m[mi + 8], out, oi);
+    }
+
+    /** {@link #invert(double[], int, double[], int)} of the matrix given by its rows (m00 m01 m02; ...). */
+    static double invert(double m00, double m01, double m02, double m10, double m11, double m12, double m20, double m21, double m22,
+            double[] out, int oi) {
         double det = m00 * (m11 * m22 - m12 * m21) - m01 * (m10 * m22 - m12 * m20) + m02 * (m10 * m21 - m11 * m20);
         if (det == 0) {
             return 0;

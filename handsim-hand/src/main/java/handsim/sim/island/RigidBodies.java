@@ -39,8 +39,8 @@ public final class RigidBodies {
     final double[] inverseInertiaWorld;
     final boolean[] active;
 
-    /** Scratch: a body's world inertia. */
-    private final double[] b = new double[9];
+    /** Scratch: a body's world inertia, then the inverse of I - h [L]x. */
+    private final double[] b = new double[18];
 
     public RigidBodies(int count) {
         this.count = count;
@@ -130,15 +130,11 @@ public final class RigidBodies {
             double c0 = b0, c1 = b1 + h * lz, c2 = b2 - h * ly;
             double c3 = b3 - h * lz, c4 = b4, c5 = b5 + h * lx;
             double c6 = b6 + h * ly, c7 = b7 - h * lx, c8 = b8;
-            // its inverse by the adjugate (Matrix3.invert)
-            double det = c0 * (c4 * c8 - c5 * c7) - c1 * (c3 * c8 - c5 * c6) + c2 * (c3 * c7 - c4 * c6);
-            if (det == 0) {
+            // its inverse, a
+            if (Matrix3.invert(c0, c1, c2, c3, c4, c5, c6, c7, c8, b, 9) == 0) {
                 continue;
             }
-            double k = 1 / det;
-            double a0 = (c4 * c8 - c5 * c7) * k, a1 = (c7 * c2 - c1 * c8) * k, a2 = (c1 * c5 - c4 * c2) * k;
-            double a3 = (c5 * c6 - c3 * c8) * k, a4 = (c0 * c8 - c6 * c2) * k, a5 = (c3 * c2 - c0 * c5) * k;
-            double a6 = (c3 * c7 - c6 * c4) * k, a7 = (c6 * c1 - c0 * c7) * k, a8 = (c0 * c4 - c1 * c3) * k;
+            double a0 = b[9], a1 = b[10], a2 = b[11], a3 = b[12], a4 = b[13], a5 = b[14], a6 = b[15], a7 = b[16], a8 = b[17];
             // I (I - h [L]x)^-1 - 1, applied to L / h
             double e0 = b0 * a0 + b1 * a3 + b2 * a6 - 1, e1 = b0 * a1 + b1 * a4 + b2 * a7, e2 = b0 * a2 + b1 * a5 + b2 * a8;
             double e3 = b3 * a0 + b4 * a3 + b5 * a6, e4 = b3 * a1 + b4 * a4 + b5 * a7 - 1, e5 = b3 * a2 + b4 * a5 + b5 * a8;
@@ -222,19 +218,7 @@ public final class RigidBodies {
                 continue;
             }
             int f = 3 * i, q = 4 * i;
-            double q0 = orientation[q], q1 = orientation[q + 1], q2 = orientation[q + 2], q3 = orientation[q + 3];
-            double l = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
-            if (l > 0) {
-                l = 1 / Math.sqrt(l);
-                q0 *= l;
-                q1 *= l;
-                q2 *= l;
-                q3 *= l;
-            }
-            orientation[q] = q0;
-            orientation[q + 1] = q1;
-            orientation[q + 2] = q2;
-            orientation[q + 3] = q3;
+            normalise(orientation, q);
             Matrix3.fromQuaternion(orientation, q, rotation, 9 * i);
             damp(velocity, f, linearScale);
             damp(angularVelocity, f, angularScale);
@@ -242,7 +226,21 @@ public final class RigidBodies {
         }
     }
 
-    private static void damp(double[] vel, int f, double scale) {
+    /** The quaternion at {@code q} made unit length, in place (left as it is when zero). */
+    static void normalise(double[] o, int q) {
+        double q0 = o[q], q1 = o[q + 1], q2 = o[q + 2], q3 = o[q + 3];
+        double l = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
+        if (l > 0) {
+            l = 1 / Math.sqrt(l);
+            o[q] = q0 * l;
+            o[q + 1] = q1 * l;
+            o[q + 2] = q2 * l;
+            o[q + 3] = q3 * l;
+        }
+    }
+
+    /** Air damping of one body's velocity (3 at {@code f}): times 1 - {@code scale} when it is not zero. */
+    static void damp(double[] vel, int f, double scale) {
         if (scale != 0 && vel[f] * vel[f] + vel[f + 1] * vel[f + 1] + vel[f + 2] * vel[f + 2] > 0) {
             double k = 1 - scale;
             vel[f] *= k;

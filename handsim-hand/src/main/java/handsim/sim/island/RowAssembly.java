@@ -98,29 +98,23 @@ final class RowAssembly {
         ball(a, j, b, rows, fps);
         int b1 = a.body1[j], b2 = a.body2[j];
         int x = 3 * j;
-        // ax1 = R1 axis1 at s[0], its plane space p at s[3], q at s[6]; ax2 = R2 axis2 at s[9]
+        // ax1 at s[0], p at s[3], q at s[6], ax2 at s[9], ax1 x ax2 at s[12]
         Matrix3.multiply(b.rotation, 9 * b1, a.axis1, x, s, 0);
-        double ax = s[0], ay = s[1], az = s[2];
-        Matrix3.planeSpace(ax, ay, az, s, 3, 6);
+        Matrix3.planeSpace(s[0], s[1], s[2], s, 3, 6);
         Matrix3.multiply(b.rotation, 9 * b2, a.axis2, x, s, 9);
-        double bx = s[9], by = s[10], bz = s[11];
-        // the misalignment ax1 x ax2
-        double ex = ay * bz - az * by, ey = az * bx - ax * bz, ez = ax * by - ay * bx;
+        cross(s, 0, s, 9, s, 12);
         double k = fps * erp;
-        for (int row = 0; row < 2; row++) {
+        for (int r = 0; r < 2; r++) {
             int o = rows.add(b1, b2, cfm, ConstraintRows.ANGULAR);
             double[] d = rows.data;
-            int t = 3 + 3 * row;
-            double tx = s[t], ty = s[t + 1], tz = s[t + 2];
-            d[o + J1 + 3] = tx;
-            d[o + J1 + 4] = ty;
-            d[o + J1 + 5] = tz;
-            d[o + J2 + 3] = -tx;
-            d[o + J2 + 4] = -ty;
-            d[o + J2 + 5] = -tz;
-            d[o + RHS] = k * (ex * tx + ey * ty + ez * tz);
+            int v = 3 + 3 * r;
+            for (int i = 0; i < 3; i++) {
+                d[o + J1 + 3 + i] = s[v + i];
+                d[o + J2 + 3 + i] = -s[v + i];
+            }
+            d[o + RHS] = k * (s[12] * s[v] + s[13] * s[v + 1] + s[14] * s[v + 2]);
         }
-        JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, x, rotation, 0);
+        JointAngles.hinge(b.orientation, 4 * b1, b.orientation, 4 * b2, a.axis1, x, q, rotation, 0);
         rotationStop(a, x, rows, b1, b2, fps, rotation[0], rotation[1], 1, s, 0);
     }
 

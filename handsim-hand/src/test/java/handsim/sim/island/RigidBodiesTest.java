@@ -170,32 +170,16 @@ class RigidBodiesTest {
             q1 += d1 * h;
             q2 += d2 * h;
             q3 += d3 * h;
-            double l = q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3;
-            if (l > 0) {
-                l = 1 / Math.sqrt(l);
-                q0 *= l;
-                q1 *= l;
-                q2 *= l;
-                q3 *= l;
-            }
             o[q] = q0;
             o[q + 1] = q1;
             o[q + 2] = q2;
             o[q + 3] = q3;
+            RigidBodies.normalise(o, q);
             Matrix3.fromQuaternion(o, q, b.rotation, 9 * i);
-            damp(b.velocity, f, linearScale);
-            damp(b.angularVelocity, f, angularScale);
+            RigidBodies.damp(b.velocity, f, linearScale);
+            RigidBodies.damp(b.angularVelocity, f, angularScale);
             java.util.Arrays.fill(b.force, f, f + 3, 0);
             java.util.Arrays.fill(b.torque, f, f + 3, 0);
-        }
-    }
-
-    private static void damp(double[] vel, int f, double scale) {
-        if (scale != 0 && vel[f] * vel[f] + vel[f + 1] * vel[f + 1] + vel[f + 2] * vel[f + 2] > 0) {
-            double k = 1 - scale;
-            vel[f] *= k;
-            vel[f + 1] *= k;
-            vel[f + 2] *= k;
         }
     }
 
