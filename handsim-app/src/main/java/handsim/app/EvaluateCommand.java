@@ -73,7 +73,8 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--copies", paramLabel = "N",
             description = "height, flip: instead of the summary, run every episode N times, copy 0 as seeded and the others with "
                     + "the launch velocity nudged by --nudge in a random direction, for --loops throws whether they succeed or "
-                    + "not, and report how far each throw's apex and flight rotation spread across the copies")
+                    + "not, and report how far each throw's apex and flight rotation spread across the copies, and each copy's throws, drops "
+                    + "and (height) mean |error|")
     Integer copies;
 
     @Option(names = "--nudge", paramLabel = "V", defaultValue = "1e-9",

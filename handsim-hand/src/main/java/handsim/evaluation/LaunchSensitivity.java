@@ -29,6 +29,24 @@ public final class LaunchSensitivity {
     public record Spread(int throwIndex, int copies, double apexSd, double rotationSd, double rotationRange) {
     }
 
+    /**
+     * One copy's headline figures, to set a figure's difference between two runs against what a
+     * nudge alone does to it.
+     *
+     * @param copy the copy (0 = as seeded)
+     * @param throwsMade throws after the caught launch
+     * @param drops loops ending in a drop (0 or 1: a drop ends the copy)
+     * @param heightAbsError mean |apex - target| over its throws (m; NaN without height targets)
+     */
+    public record CopyFigures(int copy, int throwsMade, int drops, double heightAbsError) {
+
+        /** The figures of copy {@code copy}, whose loops are {@code loops}. */
+        public static CopyFigures of(int copy, List<LoopRecord> loops) {
+            return new CopyFigures(copy, (int) loops.stream().filter(l -> l.index() > 0).count(),
+                    (int) loops.stream().filter(l -> !l.caught()).count(), HeightErrors.of(loops).absMean());
+        }
+    }
+
     private LaunchSensitivity() {
     }
 
@@ -107,7 +125,7 @@ public final class LaunchSensitivity {
         }
     }
 
-    private static double average(List<Double> v) {
+    static double average(List<Double> v) {
         return v.isEmpty() ? Double.NaN : v.stream().mapToDouble(Double::doubleValue).average().orElseThrow();
     }
 
@@ -122,7 +140,7 @@ public final class LaunchSensitivity {
     }
 
     /** Sample standard deviation (NaN below 2 values). */
-    private static double sd(List<Double> v) {
+    static double sd(List<Double> v) {
         if (v.size() < 2) {
             return Double.NaN;
         }

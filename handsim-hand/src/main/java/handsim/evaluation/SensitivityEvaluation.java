@@ -55,6 +55,7 @@ public final class SensitivityEvaluation extends TaskEvaluation {
         // run j is copy j % copies of episode j / copies; an episode is printed once its copies are in
         List<List<LaunchSensitivity.Spread>> perEpisode = new ArrayList<>();
         List<List<LoopRecord>> copiesDone = new ArrayList<>();
+        List<LaunchSensitivity.CopyFigures> figures = new ArrayList<>();
         ArrayNode eps = out.putArray("episodes");
         rollouts.run(episodes * copies, resumable(sim -> {
             CatchEvaluation evaluation = evaluation(tasks.get());
@@ -63,12 +64,19 @@ public final class SensitivityEvaluation extends TaskEvaluation {
             copiesDone.add(loopsOfCopy);
             if (copiesDone.size() == copies) {
                 List<LaunchSensitivity.Spread> spreads = LaunchSensitivity.spreads(copiesDone);
+                List<LaunchSensitivity.CopyFigures> episodeFigures = new ArrayList<>();
+                for (int c = 0; c < copies; c++) {
+                    episodeFigures.add(LaunchSensitivity.CopyFigures.of(c, copiesDone.get(c)));
+                }
                 copiesDone.clear();
                 perEpisode.add(spreads);
+                figures.addAll(episodeFigures);
                 ObjectNode o = eps.addObject();
                 o.put("seed", seed + j / copies);
                 o.set("throws", spreadsJson(spreads));
+                o.set("copies", figuresJson(episodeFigures));
                 console.printf(Locale.ROOT, "episode %d: %s%n", seed + j / copies, spreadsLine(spreads));
+                console.printf(Locale.ROOT, "episode %d by copy: %s%n", seed + j / copies, figuresLine(episodeFigures));
             }
         });
         List<LaunchSensitivity.Spread> mean = LaunchSensitivity.mean(perEpisode);
@@ -78,6 +86,19 @@ public final class SensitivityEvaluation extends TaskEvaluation {
         out.put("loops", loops);
         out.set("mean_by_throw", spreadsJson(mean));
         out.set("median_by_throw", spreadsJson(median));
+        out.put("drops", figures.stream().mapToInt(LaunchSensitivity.CopyFigures::drops).sum());
+        List<Double> heightErrors = figures.stream().map(LaunchSensitivity.CopyFigures::heightAbsError).filter(Double::isFinite).toList();
+        if (!heightErrors.isEmpty()) {
+            // the headline figure of every copy: how far a nudge alone moves a run's mean |error|
+            ObjectNode h = out.putObject("height_error_abs_mean_over_copies");
+            putFinite(h, "mean", LaunchSensitivity.average(heightErrors));
+            putFinite(h, "sd", LaunchSensitivity.sd(heightErrors));
+            h.put("min", heightErrors.stream().mapToDouble(Double::doubleValue).min().orElseThrow());
+            h.put("max", heightErrors.stream().mapToDouble(Double::doubleValue).max().orElseThrow());
+            console.printf(Locale.ROOT, "|height error| mean over %d copies: %.4f m, sd %.4f m, from %.4f to %.4f m; drops %d%n",
+                    heightErrors.size(), h.get("mean").asDouble(), h.get("sd").asDouble(), h.get("min").asDouble(),
+                    h.get("max").asDouble(), out.get("drops").asInt());
+        }
         console.printf(Locale.ROOT, "%s task, %s controller, %s, %d episodes x %d copies (launch nudged by %.1e m/s), mean spread "
                 + "across copies by throw: %s%n", task, controller, object, episodes, copies, nudge, spreadsLine(mean));
         console.printf(Locale.ROOT, "median over episodes: %s%n", spreadsLine(median));
@@ -120,6 +141,30 @@ public final class SensitivityEvaluation extends TaskEvaluation {
             putFinite(o, "flight_rotation_range_deg", Math.toDegrees(s.rotationRange()));
         }
         return a;
+    }
+
+    private static ArrayNode figuresJson(List<LaunchSensitivity.CopyFigures> figures) {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode();
+        for (LaunchSensitivity.CopyFigures f : figures) {
+            ObjectNode o = a.addObject();
+            o.put("copy", f.copy());
+            o.put("throws", f.throwsMade());
+            o.put("drops", f.drops());
+            putFinite(o, "height_error_abs_mean", f.heightAbsError());
+        }
+        return a;
+    }
+
+    private static String figuresLine(List<LaunchSensitivity.CopyFigures> figures) {
+        StringBuilder sb = new StringBuilder();
+        for (LaunchSensitivity.CopyFigures f : figures) {
+            sb.append(String.format(Locale.ROOT, "%scopy %d: %d throws, %d drops", sb.length() == 0 ? "" : "; ", f.copy(),
+                    f.throwsMade(), f.drops()));
+            if (Double.isFinite(f.heightAbsError())) {
+                sb.append(String.format(Locale.ROOT, ", |error| %.4f m", f.heightAbsError()));
+            }
+        }
+        return sb.toString();
     }
 
     private static String spreadsLine(List<LaunchSensitivity.Spread> spreads) {

@@ -36,6 +36,24 @@ class LaunchSensitivityTest {
         assertThrows(IllegalArgumentException.class, () -> LaunchSensitivity.nudges(7, 3, 0));
     }
 
+    private static LoopRecord aimed(int index, boolean caught, double apex, double target) {
+        return new LoopRecord(index, caught, apex, null, target, null, false, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                Double.NaN, null, Double.NaN, 0, 0, 0, 1);
+    }
+
+    @Test
+    void aCopysFiguresAreItsThrowsDropsAndMeanHeightError() {
+        // throws 1-3 miss by +0.02, -0.04 and -0.09 m (mean |error| 0.05 m); throw 3 is dropped after its apex
+        LaunchSensitivity.CopyFigures f = LaunchSensitivity.CopyFigures.of(3, List.of(THROW_IN, aimed(1, true, 1.02, 1.0),
+                aimed(2, true, 0.76, 0.8), aimed(3, false, 1.11, 1.2)));
+        assertEquals(3, f.copy());
+        assertEquals(3, f.throwsMade());
+        assertEquals(1, f.drops());
+        assertEquals(0.05, f.heightAbsError(), 1e-12);
+        assertTrue(Double.isNaN(LaunchSensitivity.CopyFigures.of(0, List.of(THROW_IN, loop(1, 1.0, 90))).heightAbsError()),
+                "no height targets, no height error");
+    }
+
     @Test
     void spreadOfEachThrowOverTheCopiesThatMadeIt() {
         // throw 1: apexes 1.0, 1.2 (sample sd 0.1414), rotations 180, 200 (sd 14.14 deg, range 20);
