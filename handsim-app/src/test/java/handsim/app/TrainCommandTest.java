@@ -39,6 +39,7 @@ class TrainCommandTest {
     void aRunsStepperOverridesThePhysicsConfigsAndABadOneIsRefusedByName() {
         // run.stepper (optional): the constrained step of the run's physics, in place of configs/sim.json's solver.stepper
         ObjectNode file = (ObjectNode) Json.load(Home.resolve("configs/train/height.json")).node().deepCopy();
+        ((ObjectNode) file.get("run")).remove("stepper"); // the shipped config names quickStep
         TrainConfig plain = TrainConfig.parse(Json.of("height.json", file));
         assertEquals(null, plain.run().stepper());
         assertEquals(Wiring.simConfig().stepper(), TrainCommand.configs(plain.run()).sim().stepper(), "absent: configs/sim.json's");

@@ -9,6 +9,7 @@ import handsim.config.Json;
 import handsim.control.ControllerConfig;
 import handsim.evaluation.CatchEvaluation;
 import handsim.evaluation.HeightErrors;
+import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.sim.ode.OdeSimulator;
 import handsim.task.EpisodeLimits;
@@ -55,15 +56,18 @@ class ShippedPoliciesTest {
      * learned-flipping goal asks for, with the task's catch (configs/tasks/flip.json: level and
      * turned, 7.5 mm toward the thumb) and arm rest; its first throw turns the can 449.218425
      * degrees end over end, its second 168.482536, its tenth 244.508052, all as measured with these
-     * policies, physics and controller. A guard that they still
-     * do what they did, not a measure of the policies (their means are in docs/results.md); the
-     * turns, doubles from a deterministic simulation, are compared to 1e-6 degrees.
+     * policies, physics and controller, with ode4j's quickStep, the step the policies were trained
+     * with (the default step, handsim's, gives the same figures within their standard errors over
+     * many episodes, docs/results.md, but other bits: on this one seed it drops the can at the 9th
+     * throw). A guard that they still do what they did, not a measure of the policies (their means
+     * are in docs/results.md); the turns, doubles from a deterministic simulation, are compared to
+     * 1e-6 degrees.
      */
     @Test
     void theCanFlipPolicyRepeatsItsGoldenRunOnTheGuardSeed() {
         CatchEvaluation evaluation = evaluation("flip", "can");
         List<LoopRecord> loops;
-        try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig())) {
+        try (Simulator sim = new OdeSimulator(TestSupport.model(), TestSupport.simConfig().withStepper(SimConfig.Stepper.ODE4J))) {
             loops = evaluation.runWhileSuccessful(sim, 30001, 10);
         }
         assertEquals(10, evaluation.successesInARow(loops), "flip-and-catch loops in a row: " + loops);
