@@ -322,6 +322,25 @@ class CommandsTest {
     }
 
     @Test
+    void copiesReportEachCopysHeadlineFigureAndCopyZeroIsThePlainRun(@TempDir Path dir) throws Exception {
+        runPrinting("evaluate", "--task", "height", "--controller", "learned", "--loops", "3", "--seed", "5", "--workers", "1",
+                "--json", dir.resolve("plain.json").toString());
+        String text = runPrinting("evaluate", "--task", "height", "--controller", "learned", "--loops", "3", "--seed", "5",
+                "--copies", "2", "--workers", "1", "--json", dir.resolve("copies.json").toString());
+        JsonNode plain = Json.load(dir.resolve("plain.json")).node(), copies = Json.load(dir.resolve("copies.json")).node();
+        JsonNode byCopy = copies.get("episodes").get(0).get("copies");
+        assertEquals(2, byCopy.size());
+        // copy 0 is the episode as seeded: its throws and mean |error| are the plain run's, to the bit
+        assertEquals(plain.get("throws").asInt(), byCopy.get(0).get("throws").asInt());
+        assertEquals(plain.get("drops").asInt(), byCopy.get(0).get("drops").asInt());
+        assertEquals(plain.get("height_error_abs_mean").asDouble(), byCopy.get(0).get("height_error_abs_mean").asDouble(), 0.0);
+        // the summary over the copies is the mean of the two copies' figures
+        double mean = (byCopy.get(0).get("height_error_abs_mean").asDouble() + byCopy.get(1).get("height_error_abs_mean").asDouble()) / 2;
+        assertEquals(mean, copies.get("height_error_abs_mean_over_copies").get("mean").asDouble(), 1e-15);
+        assertTrue(text.contains("|height error| mean over 2 copies"), text);
+    }
+
+    @Test
     void flipEvaluationRunsEpisodesPastTheCansGoalUnlessLoopsSaysOtherwise(@TempDir Path dir) throws Exception {
         String text = runPrinting("evaluate", "--task", "flip", "--object", "can", "--episodes", "1", "--seed", "1",
                 "--workers", "1", "--json", dir.resolve("flip.json").toString(), "--csv", dir.resolve("flip.csv").toString());

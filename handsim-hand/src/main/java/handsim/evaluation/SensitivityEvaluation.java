@@ -131,27 +131,28 @@ public final class SensitivityEvaluation extends TaskEvaluation {
     }
 
     private static ArrayNode spreadsJson(List<LaunchSensitivity.Spread> spreads) {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode();
-        for (LaunchSensitivity.Spread s : spreads) {
-            ObjectNode o = a.addObject();
+        return jsonArray(spreads, (s, o) -> {
             o.put("throw", s.throwIndex());
             o.put("copies", s.copies());
             putFinite(o, "apex_sd_mm", 1000 * s.apexSd());
             putFinite(o, "flight_rotation_sd_deg", Math.toDegrees(s.rotationSd()));
             putFinite(o, "flight_rotation_range_deg", Math.toDegrees(s.rotationRange()));
-        }
-        return a;
+        });
     }
 
     private static ArrayNode figuresJson(List<LaunchSensitivity.CopyFigures> figures) {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode();
-        for (LaunchSensitivity.CopyFigures f : figures) {
-            ObjectNode o = a.addObject();
+        return jsonArray(figures, (f, o) -> {
             o.put("copy", f.copy());
             o.put("throws", f.throwsMade());
             o.put("drops", f.drops());
             putFinite(o, "height_error_abs_mean", f.heightAbsError());
-        }
+        });
+    }
+
+    /** A JSON array with one object per item, its fields written by {@code fields}. */
+    private static <T> ArrayNode jsonArray(List<T> items, java.util.function.BiConsumer<T, ObjectNode> fields) {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode();
+        items.forEach(item -> fields.accept(item, a.addObject()));
         return a;
     }
 
