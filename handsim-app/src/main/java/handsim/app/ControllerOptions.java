@@ -1,6 +1,7 @@
 package handsim.app;
 
 import handsim.config.ConfigSet;
+import handsim.sim.SimConfig;
 import handsim.spec.RunConfigs;
 import handsim.taskdef.FlipDefinition;
 import handsim.taskdef.HeightDefinition;
@@ -17,7 +18,7 @@ import picocli.CommandLine.Option;
  * Who throws, declared once for every command that runs a catch-and-throw loop ({@code
  * evaluate}, {@code view}, {@code render}, {@code export}): the task the throws aim at (and fields
  * of its file changed), the nominal or a learned controller, the learned controller's policy (and
- * the flip's opening and rest policies) and the throw planner. Left out, an option is null (false
+ * the flip's opening and rest policies), the throw planner and the physics' constrained step. Left out, an option is null (false
  * for {@code --plan}, empty for {@code --task-set}); {@link #task()} and {@link #controller()}
  * give the defaults.
  */
@@ -25,21 +26,24 @@ final class ControllerOptions {
 
     /**
      * The policy files given for a learned controller (null: not given), whether the planner
-     * chooses the flip's throws and, per task name, the fields of its file changed: what the
-     * viewer's scenes are opened with.
+     * chooses the flip's throws, per task name the fields of its file changed, and the
+     * constrained step (null: configs/sim.json's): what the viewer's scenes are opened with.
      */
-    record Choice(Path policy, Path opening, Path rest, boolean plan, Map<String, Map<String, String>> taskSet) {
+    record Choice(Path policy, Path opening, Path rest, boolean plan, Map<String, Map<String, String>> taskSet, String stepper) {
 
-        /** Nothing given: the shipped policies and tasks, no planner. */
-        static final Choice SHIPPED = new Choice(null, null, null, false, Map.of());
+        /** Nothing given: the shipped policies, tasks and physics, no planner. */
+        static final Choice SHIPPED = new Choice(null, null, null, false, Map.of(), null);
 
-        /** The project's configs with {@link #taskSet} applied: the shipped ones when nothing is set. */
+        /** The project's configs with {@link #taskSet} and {@link #stepper} applied: the shipped ones when nothing is set. */
         RunConfigs configs() {
-            if (taskSet.isEmpty()) {
+            if (taskSet.isEmpty() && stepper == null) {
                 return Wiring.shipped();
             }
             Map<String, Map<String, String>> byFile = new LinkedHashMap<>();
             taskSet.forEach((task, fields) -> byFile.put(TaskDefinitions.file(task), fields));
+            if (stepper != null) {
+                byFile.put(RunConfigs.SIM, Map.of("solver.stepper", stepper));
+            }
             return new RunConfigs(ConfigSet.fromFiles(byFile));
         }
     }
@@ -72,6 +76,11 @@ final class ControllerOptions {
             + "--task-set objects.can.armRest=null (repeatable; dotted paths)")
     List<String> taskSet = List.of();
 
+    @Option(names = "--stepper", paramLabel = "S",
+            description = "the constrained step: handsim (handsim's own) or ode4j (ode4j's quickStep, with which the shipped "
+                    + "policies were trained) (default: configs/sim.json's solver.stepper)")
+    String stepper;
+
     @Option(names = "--plan", description = "flip: choose every throw by trying the policy's throw and variations of it in a twin "
             + "world first (handsim.planning.ThrowPlanner, settings in configs/planner.json); the hand then makes the best")
     boolean plan;
@@ -91,7 +100,7 @@ final class ControllerOptions {
         return task != null || controller != null || plan;
     }
 
-    /** Refuses an unknown task or controller and a policy for the nominal controller. */
+    /** Refuses an unknown task or controller and a policy for the nominal controller, and what {@link #validateSceneOptions} refuses. */
     void validate() {
         if (!TaskDefinitions.NAMES.contains(task())) {
             throw new IllegalArgumentException("--task must be one of " + String.join(", ", TaskDefinitions.NAMES) + ", got " + task);
@@ -102,14 +111,17 @@ final class ControllerOptions {
         if (policy != null && !controller().equals("learned")) {
             throw new IllegalArgumentException("--policy goes with --controller learned");
         }
-        validateFlipPolicies();
+        validateSceneOptions();
     }
 
     /**
-     * Refuses an opening or rest policy where no learned flip is thrown, one whose file does not
-     * exist (a typo), and a --task-set the task's file does not take.
+     * Refuses an unknown step, an opening or rest policy where no learned flip is thrown, one
+     * whose file does not exist (a typo), and a --task-set the task's file does not take.
      */
-    void validateFlipPolicies() {
+    void validateSceneOptions() {
+        if (stepper != null) {
+            SimConfig.Stepper.named("--stepper", stepper);
+        }
         refuseMisplaced("--opening-policy", openingPolicy);
         refuseMisplaced("--rest-policy", restPolicy);
         if (!taskSet.isEmpty()) {
@@ -135,7 +147,7 @@ final class ControllerOptions {
     /** The options as the viewer's scenes take them. */
     Choice choice() {
         Map<String, String> fields = taskSetFields();
-        return new Choice(policy, openingPolicy, restPolicy, plan, fields.isEmpty() ? Map.of() : Map.of(task(), fields));
+        return new Choice(policy, openingPolicy, restPolicy, plan, fields.isEmpty() ? Map.of() : Map.of(task(), fields), stepper);
     }
 
     /** The learned controller's policy file: --policy, or the one shipped for the task and {@code object}. */

@@ -9,7 +9,6 @@ import handsim.evaluation.TaskEvaluation;
 import handsim.report.Outputs;
 import handsim.rollout.LocalRollouts;
 import handsim.rollout.Rollouts;
-import handsim.sim.SimConfig;
 import handsim.sim.Simulator;
 import handsim.spec.RunConfigs;
 import handsim.taskdef.TaskDefinition;
@@ -80,11 +79,6 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--nudge", paramLabel = "V", defaultValue = "1e-9",
             description = "the launch velocity nudge of --copies (m/s, default: ${DEFAULT-VALUE})")
     double nudge;
-
-    @Option(names = "--stepper", paramLabel = "S",
-            description = "the constrained step: handsim (handsim's own) or ode4j (ode4j's quickStep) (default: configs/sim.json's "
-                    + "solver.stepper); recorded in the spec with the physics' config")
-    String stepper;
 
     @Option(names = "--json", paramLabel = "FILE", description = "write the summary as JSON, with its provenance (commit, "
             + "command line, SHA-256 of every config, model and policy file read); while the run goes, each finished episode is "
@@ -168,12 +162,9 @@ final class EvaluateCommand implements Callable<Integer> {
     /** The run asked for: the spec of --spec, or the one the options give. */
     private EvaluateSpec resolve() {
         if (specFile == null) {
-            who.validate();
-            if (stepper != null) {
-                SimConfig.Stepper.named("--stepper", stepper); // refused here, before anything is written
-            }
+            who.validate(); // a bad --stepper among them, refused before anything is written
             return EvaluateSpec.of(who, episodeOptions.object, episodeOptions.seed, loopsOption, episodes, tests, throwHeight, goals,
-                    copies, nudge, stepper);
+                    copies, nudge, who.stepper);
         }
         for (String option : RECORDED) {
             if (spec.commandLine().getParseResult().hasMatchedOption(option)) {

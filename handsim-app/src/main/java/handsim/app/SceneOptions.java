@@ -42,7 +42,7 @@ final class SceneOptions {
      * misplaced opening or rest policy and a bad --task-set.
      */
     void validate() {
-        who.validateFlipPolicies();
+        who.validateSceneOptions();
         if (!(seconds > 0 && seconds <= 600)) {
             throw new IllegalArgumentException("--seconds must be in (0, 600], got " + seconds);
         }

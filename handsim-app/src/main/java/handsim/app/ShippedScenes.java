@@ -78,7 +78,7 @@ final class ShippedScenes implements SceneCatalog {
     /**
      * Rejects names this catalog does not list and a --policy file that does not exist (typos on
      * the command line; a missing --opening-policy or --rest-policy file is refused with the
-     * options, {@link ControllerOptions#validateFlipPolicies}).
+     * options, {@link ControllerOptions#validateSceneOptions}).
      */
     void validate(SceneSetup s) {
         check("--task", s.task(), TaskDefinitions.NAMES);

@@ -47,7 +47,7 @@ final class ViewCommand implements Callable<Integer> {
             new OutputPaths().file("--screenshot", screenshot).check();
             return CardsPlayback.play(cards.scene, cards.file(false), benchmarkFrames, screenshot);
         }
-        who.validateFlipPolicies();
+        who.validateSceneOptions();
         HeightGoals goals = DemoCommand.parseHeights(heights);
         new OutputPaths().file("--screenshot", screenshot).check();
         return ViewerSession.open("view", new SceneSetup(who.task(), episodeOptions.object, who.controller(), episodeOptions.seed), goals,

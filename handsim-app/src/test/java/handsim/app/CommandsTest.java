@@ -552,19 +552,19 @@ class CommandsTest {
         // --stepper overrides configs/sim.json's solver.stepper for this run: the summary names the step, the spec holds the
         // physics' document as read, and the run repeated from the spec alone steps with it again, key by key the same
         Path first = dir.resolve("first.json");
-        runPrinting("evaluate", "--task", "height", "--episodes", "1", "--loops", "1", "--seed", "1", "--workers", "1", "--stepper", "handsim",
+        runPrinting("evaluate", "--task", "height", "--episodes", "1", "--loops", "1", "--seed", "1", "--workers", "1", "--stepper", "ode4j",
                 "--json", first.toString());
         JsonNode recorded = Json.load(first).node();
-        assertEquals("handsim", recorded.get("stepper").asText());
-        assertEquals("handsim", recorded.get("spec").get("configs").get("configs/sim.json").get("solver").get("stepper").asText());
+        assertEquals("ode4j", recorded.get("stepper").asText()); // not the default, handsim's
+        assertEquals("ode4j", recorded.get("spec").get("configs").get("configs/sim.json").get("solver").get("stepper").asText());
         Path again = dir.resolve("again.json");
         runPrinting("evaluate", "--spec", first.toString(), "--workers", "1", "--json", again.toString());
         ObjectNode a = (ObjectNode) recorded.deepCopy(), b = (ObjectNode) Json.load(again).node().deepCopy();
         for (ObjectNode o : List.of(a, b)) {
             o.remove(List.of("provenance", "wall_s", "workers"));
         }
-        assertEquals(a, b, "the same run, with handsim's step");
-        CliRun.of("evaluate", "--spec", first.toString(), "--stepper", "ode4j").assertRefused(2, "--stepper goes without --spec");
+        assertEquals(a, b, "the same run, with quickStep");
+        CliRun.of("evaluate", "--spec", first.toString(), "--stepper", "handsim").assertRefused(2, "--stepper goes without --spec");
         CliRun.of("evaluate", "--task", "height", "--stepper", "bullet").assertRefused(2, "--stepper must be handsim or ode4j", "bullet");
     }
 
@@ -655,7 +655,7 @@ class CommandsTest {
         // task has no settings for it, and the scene falls back to the height task with the note it gives for a cuboid
         var taskSet = java.util.Map.of("flip", java.util.Map.of("objects.can", "null"));
         ShippedScenes varied = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7),
-                new ControllerOptions.Choice(null, null, null, false, taskSet));
+                new ControllerOptions.Choice(null, null, null, false, taskSet, null));
         SceneCatalog.Opened opened = varied.open(new SceneSetup("flip", "can", "nominal", 1));
         try (InteractiveScene scene = opened.scene()) {
             assertEquals(new SceneSetup("height", "can", "nominal", 1), opened.setup());
@@ -669,8 +669,23 @@ class CommandsTest {
     }
 
     @Test
+    void theSceneCommandsTakeTheConstrainedStepAsEvaluateDoes(@TempDir Path dir) {
+        // --stepper sets configs/sim.json's solver.stepper for the scenes of view, render and export; absent, the file's
+        assertEquals(handsim.sim.SimConfig.Stepper.ODE4J,
+                new ControllerOptions.Choice(null, null, null, false, java.util.Map.of(), "ode4j").configs().sim().stepper());
+        assertEquals(handsim.sim.SimConfig.Stepper.HANDSIM,
+                new ControllerOptions.Choice(null, null, null, false, java.util.Map.of(), "handsim").configs().sim().stepper());
+        assertEquals(Wiring.simConfig().stepper(), ControllerOptions.Choice.SHIPPED.configs().sim().stepper());
+        Path none = dir.resolve("none.bvh");
+        CliRun.of("export", "--stepper", "bullet", "--out", none.toString()).assertRefused(2, "--stepper must be handsim or ode4j", "bullet");
+        CliRun.of("render", "--stepper", "bullet", "--out", dir.resolve("r").toString()).assertRefused(2, "--stepper", "bullet");
+        CliRun.of("view", "--stepper", "bullet").assertRefused(2, "--stepper", "bullet");
+        assertFalse(Files.exists(none) || Files.exists(dir.resolve("r")), "nothing written");
+    }
+
+    @Test
     void theViewersPlannedFlipSceneShowsThePlannersWorkAndOtherTasksAreNotPlannedWithANote() {
-        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true, java.util.Map.of()));
+        ShippedScenes catalog = new ShippedScenes(new HeightGoals(1.1, 1.3), new HeightControl(0.05, 0.8, 1.7), new ControllerOptions.Choice(null, null, null, true, java.util.Map.of(), null));
         SceneCatalog.Opened flip = catalog.open(new SceneSetup("flip", "can", "learned", 101));
         try (InteractiveScene scene = flip.scene()) {
             assertTrue(flip.notes().isEmpty(), String.join(" | ", flip.notes()));
