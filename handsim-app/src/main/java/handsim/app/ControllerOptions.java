@@ -1,6 +1,5 @@
 package handsim.app;
 
-import handsim.config.ConfigSet;
 import handsim.sim.SimConfig;
 import handsim.spec.RunConfigs;
 import handsim.taskdef.FlipDefinition;
@@ -9,7 +8,6 @@ import handsim.taskdef.TaskDefinitions;
 import handsim.train.ThrowPolicyFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import picocli.CommandLine.Option;
@@ -36,15 +34,7 @@ final class ControllerOptions {
 
         /** The project's configs with {@link #taskSet} and {@link #stepper} applied: the shipped ones when nothing is set. */
         RunConfigs configs() {
-            if (taskSet.isEmpty() && stepper == null) {
-                return Wiring.shipped();
-            }
-            Map<String, Map<String, String>> byFile = new LinkedHashMap<>();
-            taskSet.forEach((task, fields) -> byFile.put(TaskDefinitions.file(task), fields));
-            if (stepper != null) {
-                byFile.put(RunConfigs.SIM, Map.of("solver.stepper", stepper));
-            }
-            return new RunConfigs(ConfigSet.fromFiles(byFile));
+            return taskSet.isEmpty() && stepper == null ? Wiring.shipped() : RunConfigs.ofProject(taskSet, stepper);
         }
     }
 

@@ -164,7 +164,7 @@ final class EvaluateCommand implements Callable<Integer> {
         if (specFile == null) {
             who.validate(); // a bad --stepper among them, refused before anything is written
             return EvaluateSpec.of(who, episodeOptions.object, episodeOptions.seed, loopsOption, episodes, tests, throwHeight, goals,
-                    copies, nudge, who.stepper);
+                    copies, nudge);
         }
         for (String option : RECORDED) {
             if (spec.commandLine().getParseResult().hasMatchedOption(option)) {

@@ -42,12 +42,12 @@ record EvaluateSpec(String task, String controller, String object, boolean plan,
 
     /**
      * The spec of a run given by its options; the defaults come from the task's and the evaluation's
-     * configs. {@code stepper} (null: configs/sim.json's) overrides the physics' {@code solver.stepper}.
+     * configs; {@code who}'s --stepper (null: configs/sim.json's) overrides the physics' {@code solver.stepper}.
      */
     static EvaluateSpec of(ControllerOptions who, String object, long seed, Integer loops, int episodes, int tests, Double throwHeight,
-            Path goals, Integer copies, double nudge, String stepper) {
+            Path goals, Integer copies, double nudge) {
         Map<String, String> taskSet = who.taskSetFields();
-        RunConfigs configs = RunConfigs.ofProject(who.task(), taskSet, stepper);
+        RunConfigs configs = RunConfigs.ofProject(who.task(), taskSet, who.stepper);
         String task = who.task();
         int resolvedLoops = loops != null ? loops : copies != null ? configs.evaluation().sensitivityThrows()
                 : configs.task(task).defaultEvaluationLoops();

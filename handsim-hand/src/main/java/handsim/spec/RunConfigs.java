@@ -54,8 +54,13 @@ public final class RunConfigs {
      * The record ({@link #files}) then holds both documents as the run read them.
      */
     public static RunConfigs ofProject(String task, Map<String, String> taskSet, String stepper) {
+        return ofProject(Map.of(task, taskSet), stepper);
+    }
+
+    /** The same for the tasks named in {@code taskSets}, each with the fields of its file changed. */
+    public static RunConfigs ofProject(Map<String, Map<String, String>> taskSets, String stepper) {
         Map<String, Map<String, String>> overrides = new LinkedHashMap<>();
-        overrides.put(TaskDefinitions.file(task), taskSet);
+        taskSets.forEach((task, fields) -> overrides.put(TaskDefinitions.file(task), fields));
         if (stepper != null) {
             overrides.put(SIM, Map.of("solver.stepper", stepper));
         }
