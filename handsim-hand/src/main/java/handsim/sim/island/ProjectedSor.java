@@ -248,12 +248,7 @@ final class ProjectedSor {
         double m3 = ii[n] * j3 + ii[n + 1] * j4 + ii[n + 2] * j5;
         double m4 = ii[n + 3] * j3 + ii[n + 4] * j4 + ii[n + 5] * j5;
         double m5 = ii[n + 6] * j3 + ii[n + 7] * j4 + ii[n + 8] * j5;
-        d[out] = m0;
-        d[out + 1] = m1;
-        d[out + 2] = m2;
-        d[out + 3] = m3;
-        d[out + 4] = m4;
-        d[out + 5] = m5;
+        store(d, out, m0, m1, m2, m3, m4, m5);
         sum += m0 * j0;
         sum += m1 * j1;
         sum += m2 * j2;
@@ -264,12 +259,17 @@ final class ProjectedSor {
     }
 
     private static void scaled(double[] d, int o, double ad, double j0, double j1, double j2, double j3, double j4, double j5) {
-        d[o] = j0 * ad;
-        d[o + 1] = j1 * ad;
-        d[o + 2] = j2 * ad;
-        d[o + 3] = j3 * ad;
-        d[o + 4] = j4 * ad;
-        d[o + 5] = j5 * ad;
+        store(d, o, j0 * ad, j1 * ad, j2 * ad, j3 * ad, j4 * ad, j5 * ad);
+    }
+
+    /** Six values into {@code to[at...]}: a body's six velocity (or row) components. */
+    private static void store(double[] to, int at, double v0, double v1, double v2, double v3, double v4, double v5) {
+        to[at] = v0;
+        to[at + 1] = v1;
+        to[at + 2] = v2;
+        to[at + 3] = v3;
+        to[at + 4] = v4;
+        to[at + 5] = v5;
     }
 
     /**
@@ -379,19 +379,9 @@ final class ProjectedSor {
                     c5 = Math.fma(delta, d[o + IMJ2 + 5], c5);
                 }
             }
-            f[a] = a0;
-            f[a + 1] = a1;
-            f[a + 2] = a2;
-            f[a + 3] = a3;
-            f[a + 4] = a4;
-            f[a + 5] = a5;
+            store(f, a, a0, a1, a2, a3, a4, a5);
             if (b >= 0) {
-                f[b] = c0;
-                f[b + 1] = c1;
-                f[b + 2] = c2;
-                f[b + 3] = c3;
-                f[b + 4] = c4;
-                f[b + 5] = c5;
+                store(f, b, c0, c1, c2, c3, c4, c5);
             }
         }
     }
